@@ -1,0 +1,90 @@
+#include "io/camera_yaml.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/error.h"
+
+namespace slamkit {
+namespace {
+
+double read_field(const YAML::Node& root, const std::string& path, const char* key,
+                  std::optional<double> fallback) {
+  const YAML::Node node = root[key];
+  if (!node) {
+    if (fallback) return *fallback;
+    throw_input_error(path, std::string("missing required key '") + key + "'");
+  }
+  double value = 0;
+  try {
+    value = node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw_input_error(path, node.Mark().line + 1, std::string("'") + key + "' is not a number");
+  }
+  if (!std::isfinite(value))
+    throw_input_error(path, node.Mark().line + 1, std::string("'") + key + "' is not finite");
+  return value;
+}
+
+}  // namespace
+
+Camera read_camera_yaml(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw_input_error(name, "calibration file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(name);
+  } catch (const YAML::Exception& e) {
+    throw_input_error(name, e.mark.line + 1, "YAML error: " + e.msg);
+  }
+  if (!root.IsMap()) throw_input_error(name, "expected a YAML map of calibration keys");
+  Camera c;
+  c.name = root["name"] ? root["name"].as<std::string>() : path.stem().string();
+  c.fx = read_field(root, name, "fx", std::nullopt);
+  c.fy = read_field(root, name, "fy", std::nullopt);
+  c.cx = read_field(root, name, "cx", std::nullopt);
+  c.cy = read_field(root, name, "cy", std::nullopt);
+  c.distortion.k1 = read_field(root, name, "k1", 0.0);
+  c.distortion.k2 = read_field(root, name, "k2", 0.0);
+  c.distortion.p1 = read_field(root, name, "p1", 0.0);
+  c.distortion.p2 = read_field(root, name, "p2", 0.0);
+  c.distortion.k3 = read_field(root, name, "k3", 0.0);
+  c.width = int(read_field(root, name, "width", 640.0));
+  c.height = int(read_field(root, name, "height", 480.0));
+  c.depth_scale = read_field(root, name, "depth_scale", 5000.0);
+  c.min_depth = read_field(root, name, "min_depth", 0.1);
+  c.max_depth = read_field(root, name, "max_depth", 8.0);
+  if (c.fx <= 0 || c.fy <= 0) throw_input_error(name, "fx and fy must be positive");
+  if (c.width <= 0 || c.height <= 0) throw_input_error(name, "width and height must be positive");
+  if (c.depth_scale <= 0) throw_input_error(name, "depth_scale must be positive");
+  if (!(c.min_depth < c.max_depth)) throw_input_error(name, "min_depth must be below max_depth");
+  return c;
+}
+
+void write_camera_yaml(const std::filesystem::path& path, const Camera& c) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  out << YAML::Key << "name" << YAML::Value << c.name;
+  out << YAML::Key << "fx" << YAML::Value << c.fx << YAML::Key << "fy" << YAML::Value << c.fy;
+  out << YAML::Key << "cx" << YAML::Value << c.cx << YAML::Key << "cy" << YAML::Value << c.cy;
+  out << YAML::Key << "k1" << YAML::Value << c.distortion.k1;
+  out << YAML::Key << "k2" << YAML::Value << c.distortion.k2;
+  out << YAML::Key << "p1" << YAML::Value << c.distortion.p1;
+  out << YAML::Key << "p2" << YAML::Value << c.distortion.p2;
+  out << YAML::Key << "k3" << YAML::Value << c.distortion.k3;
+  out << YAML::Key << "width" << YAML::Value << c.width;
+  out << YAML::Key << "height" << YAML::Value << c.height;
+  out << YAML::Key << "depth_scale" << YAML::Value << c.depth_scale;
+  out << YAML::Key << "min_depth" << YAML::Value << c.min_depth;
+  out << YAML::Key << "max_depth" << YAML::Value << c.max_depth;
+  out << YAML::EndMap;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path);
+  file << out.c_str() << "\n";
+  if (!file) throw_input_error(path.string(), "cannot write file");
+}
+
+}  // namespace slamkit

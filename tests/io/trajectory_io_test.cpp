@@ -1,0 +1,120 @@
+#include "io/trajectory_io.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "core/error.h"
+#include "support/test_data.h"
+
+namespace slamkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+Trajectory random_trajectory(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uni(-3, 3);
+  Trajectory t;
+  double stamp = 1305031453.359684;
+  for (int i = 0; i < n; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+    T.translation() = Eigen::Vector3d(uni(rng), uni(rng), uni(rng));
+    t.push_back(stamp, T);
+    stamp += 0.0333337 + 1e-7 * i;
+  }
+  return t;
+}
+
+TEST(TrajectoryIo, RoundTripsExactly) {
+  const fs::path dir = test::temp_dir("traj");
+  const Trajectory original = random_trajectory(200, 11);
+  write_tum_trajectory(dir / "t.txt", original, "written by a test");
+  const TrajectoryFile read = read_tum_trajectory(dir / "t.txt");
+  ASSERT_EQ(read.trajectory.size(), original.size());
+  EXPECT_TRUE(read.warnings.empty());
+  for (size_t i = 0; i < original.size(); ++i) {
+    EXPECT_EQ(read.trajectory[i].stamp, original[i].stamp);
+    EXPECT_LT((read.trajectory[i].T_w_c.matrix() - original[i].T_w_c.matrix()).norm(), 1e-9);
+  }
+}
+
+TEST(TrajectoryIo, AcceptsTabsCommasCrlfCommentsAndNormalisesQuaternions) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path = write_text(dir, "t.txt",
+                                   "# comment\r\n\r\n"
+                                   "1.0\t1 2 3 0 0 0 2\r\n"
+                                   "2.0,1,2,3,0,0,0,1\r\n");
+  const TrajectoryFile read = read_tum_trajectory(path);
+  ASSERT_EQ(read.trajectory.size(), 2u);
+  EXPECT_TRUE(read.trajectory[0].T_w_c.rotation().isIdentity(1e-12));
+  EXPECT_EQ(read.trajectory[1].T_w_c.translation(), Eigen::Vector3d(1, 2, 3));
+}
+
+TEST(TrajectoryIo, SkipsZeroQuaternionsAndNonFiniteLinesWithWarnings) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path = write_text(dir, "t.txt",
+                                   "1 0 0 0 0 0 0 1\n"
+                                   "2 0 0 0 0 0 0 0\n"
+                                   "3 nan 0 0 0 0 0 1\n"
+                                   "4 0 0 0 0 0 0 1\n");
+  const TrajectoryFile read = read_tum_trajectory(path);
+  EXPECT_EQ(read.trajectory.size(), 2u);
+  EXPECT_EQ(read.zero_quaternions_skipped, 1);
+  EXPECT_EQ(read.non_finite_lines_skipped, 1);
+  ASSERT_EQ(read.warnings.size(), 2u);
+  EXPECT_NE(read.warnings[0].find("t.txt:2"), std::string::npos);
+  EXPECT_NE(read.warnings[1].find("t.txt:3"), std::string::npos);
+}
+
+TEST(TrajectoryIo, SortsUnsortedFilesWithAWarning) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path = write_text(dir, "t.txt", "2 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
+  const TrajectoryFile read = read_tum_trajectory(path);
+  EXPECT_TRUE(read.was_unsorted);
+  EXPECT_EQ(read.trajectory[0].stamp, 1.0);
+  EXPECT_EQ(read.trajectory[0].T_w_c.translation().x(), 1.0);
+}
+
+TEST(TrajectoryIo, KeepsTheLastLineOfARepeatedTimestampLikeTheBenchmark) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path =
+      write_text(dir, "dup.txt", "1 0 0 0 0 0 0 1\n1 5 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n");
+  const TrajectoryFile read = read_tum_trajectory(path);
+  ASSERT_EQ(read.trajectory.size(), 2u);
+  EXPECT_EQ(read.trajectory[0].T_w_c.translation().x(), 5.0);
+  EXPECT_EQ(read.duplicate_stamps_dropped, 1);
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_NE(read.warnings[0].find("dup.txt:1: duplicate timestamp, line replaced by line 2"),
+            std::string::npos);
+}
+
+void expect_error(const fs::path& path, const std::string& fragment) {
+  try {
+    read_tum_trajectory(path);
+    FAIL() << "no error for " << path;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(TrajectoryIo, RejectsMalformedFilesNamingFileAndLine) {
+  const fs::path dir = test::temp_dir("traj");
+  expect_error(write_text(dir, "seven.txt", "1 0 0 0 0 0 1\n"), "seven.txt:1: expected 8 fields");
+  expect_error(write_text(dir, "nine.txt", "# h\n1 0 0 0 0 0 0 1 5\n"),
+               "nine.txt:2: expected 8 fields");
+  expect_error(write_text(dir, "word.txt", "1 0 0 x 0 0 0 1\n"), "word.txt:1: field 4 is not a number");
+  expect_error(write_text(dir, "empty.txt", "# nothing\n"), "empty.txt: no valid pose");
+  expect_error(dir / "missing.txt", "missing.txt: file not found");
+}
+
+}  // namespace
+}  // namespace slamkit

@@ -1,0 +1,49 @@
+#include "support/test_data.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+
+namespace slamkit::test {
+
+std::optional<std::filesystem::path> real_data(const std::string& relative) {
+  const char* root = std::getenv("SLAMKIT_DATA");
+  if (!root || !*root) return std::nullopt;
+  const std::filesystem::path path = std::filesystem::path(root) / relative;
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return path;
+}
+
+bool running_under_ci() {
+  const char* ci = std::getenv("CI");
+  return ci && std::string(ci) == "true";
+}
+
+std::filesystem::path temp_dir(const std::string& tag) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = tag;
+  if (info) name += std::string("_") + info->test_suite_name() + "_" + info->name();
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const auto dir = std::filesystem::temp_directory_path() / "slamkit_tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+int run_slamkit(const std::string& arguments, std::string* output) {
+  const std::string command = std::string(SLAMKIT_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer;
+  std::string text;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) text.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  if (output) *output = text;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace slamkit::test

@@ -1,0 +1,36 @@
+#pragma once
+// Access to the real TUM data for tests. The folder comes from SLAMKIT_DATA. When it is
+// missing, a test needing it fails under CI (CI=true) and is skipped elsewhere, with a
+// message saying what to set.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace slamkit::test {
+
+// $SLAMKIT_DATA/<relative> if that exists.
+std::optional<std::filesystem::path> real_data(const std::string& relative);
+
+bool running_under_ci();
+
+// A fresh empty folder under the system temp dir, unique per test.
+std::filesystem::path temp_dir(const std::string& tag);
+
+// Runs the slamkit executable with the given arguments; returns its exit code and puts
+// stdout+stderr into `output`.
+int run_slamkit(const std::string& arguments, std::string* output = nullptr);
+
+}  // namespace slamkit::test
+
+// Declares `var` as the real-data path, or fails (CI) / skips (elsewhere) the test.
+#define SLAMKIT_REQUIRE_DATA(var, relative)                                                  \
+  const auto var##_found = ::slamkit::test::real_data(relative);                             \
+  if (!var##_found) {                                                                       \
+    const std::string why = std::string("real data '") + (relative) +                        \
+                            "' not found: set SLAMKIT_DATA to the datasets folder";          \
+    if (::slamkit::test::running_under_ci()) FAIL() << why;                                  \
+    GTEST_SKIP() << why;                                                                     \
+  }                                                                                          \
+  const std::filesystem::path var = *var##_found
