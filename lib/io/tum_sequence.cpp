@@ -65,15 +65,20 @@ std::vector<FrameFiles> associate_lists(const fs::path& folder, const SequenceOp
 }
 
 Camera choose_camera(const fs::path& folder, const SequenceOptions& options) {
+  // Precedence: the file the user names, then the folder's own calibration.yaml (synthetic
+  // sequences carry one), then the Freiburg preset named by the folder.
   Camera camera;
+  const fs::path folder_calibration = folder / "calibration.yaml";
   if (options.calibration_file) {
     camera = read_camera_yaml(*options.calibration_file);
+  } else if (fs::exists(folder_calibration)) {
+    camera = read_camera_yaml(folder_calibration);
   } else if (auto preset = Camera::preset_for_sequence(folder)) {
     camera = *preset;
   } else {
     throw_input_error(folder.string(),
-                      "cannot tell the camera: the folder name has no 'freiburg1/2/3'; "
-                      "give a calibration file");
+                      "cannot tell the camera: the folder name has no 'freiburg1/2/3' and it "
+                      "holds no calibration.yaml; give a calibration file");
   }
   if (options.depth_scale) camera.depth_scale = *options.depth_scale;
   return camera;

@@ -45,8 +45,9 @@ std::vector<StampedFile> read_file_list(const std::filesystem::path& path);
 
 class TumSequence {
  public:
-  // Throws InputError for a missing folder or list, malformed lines, no RGB-depth pair within
-  // tolerance, no camera (folder name without 'freiburgN' and no calibration file), and a
+  // The camera is the calibration file given, else the folder's calibration.yaml, else the
+  // Freiburg preset its name says. Throws InputError for a missing folder or list, malformed
+  // lines, no RGB-depth pair within tolerance, no camera, and a
   // groundtruth that does not overlap the frames.
   static TumSequence open(const std::filesystem::path& folder, const SequenceOptions& options = {});
 

@@ -1,0 +1,25 @@
+#pragma once
+// The keyframe rule (SPEC section 3): the current frame is compared with the latest keyframe
+// and its neighbour frames; if the least similar of them has zeta < 0.7 the frame is a
+// keyframe. A guard (ours) also makes one when tracking thins out.
+#include <vector>
+
+#include "core/settings/keyframe_settings.h"
+#include "keyframes/window_code.h"
+
+namespace slamkit {
+
+struct KeyframeDecision {
+  bool is_keyframe = false;
+  double similarity = 1.0;  // zeta_I, the minimum over the compared frames
+  bool forced_by_tracking = false;
+};
+
+// codes[i] is frame i's code (at least up to `current`). tracked_matches is how many of the
+// current frame's features were matched to the map; reference_matches how many its
+// reference keyframe had (0 disables the guard).
+KeyframeDecision decide_keyframe(const std::vector<WindowCode>& codes, size_t latest_keyframe,
+                                 size_t current, int tracked_matches, int reference_matches,
+                                 const KeyframeSettings& settings);
+
+}  // namespace slamkit

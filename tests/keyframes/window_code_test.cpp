@@ -1,0 +1,83 @@
+#include "keyframes/window_code.h"
+
+#include <gtest/gtest.h>
+
+#include "io/tum_sequence.h"
+#include "keyframes/keyframe_rule.h"
+#include "support/test_data.h"
+
+namespace slamkit {
+namespace {
+
+cv::Mat two_halves(int boundary_x) {
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(50, 50, 50));
+  image.colRange(0, boundary_x).setTo(cv::Scalar(200, 200, 200));
+  return image;
+}
+
+TEST(WindowCode, BitCountMatchesTheLevelsWindows) {
+  KeyframeSettings settings;
+  const WindowPattern pattern({640, 480}, settings);
+  // 640x480, 533x400, 444x333, 370x278 -> windows 320*240 + 266*200 + 222*166 + 185*139.
+  EXPECT_EQ(pattern.total_bits(), size_t(76800 + 53200 + 36852 + 25715));
+  EXPECT_EQ(encode_windows(two_halves(320), pattern).bits, pattern.total_bits());
+}
+
+TEST(WindowCode, SimilarityCountsTheWindowsThatChanged) {
+  KeyframeSettings settings;
+  settings.pyramid_levels = 1;  // level 0 only: no resampling blur, so the answer is exact
+  const WindowPattern pattern({640, 480}, settings);
+  const WindowCode a = encode_windows(two_halves(320), pattern);
+  const WindowCode b = encode_windows(two_halves(300), pattern);
+  // The windows with x in [300, 320) flip: 10 per row over 240 rows, of 76,800.
+  EXPECT_DOUBLE_EQ(window_similarity(a, b), 1.0 - 2400.0 / 76800.0);
+  EXPECT_DOUBLE_EQ(window_similarity(a, a), 1.0);
+}
+
+TEST(WindowCode, PatternIsFixedBySeed) {
+  KeyframeSettings settings;
+  const WindowPattern p1({640, 480}, settings), p2({640, 480}, settings);
+  settings.pattern_seed += 1;
+  const WindowPattern p3({640, 480}, settings);
+  int same12 = 0, same13 = 0;
+  for (int y = 0; y < 100; ++y)
+    for (int x = 0; x < 100; ++x) {
+      same12 += p1.choice(0, x, y) == p2.choice(0, x, y);
+      same13 += p1.choice(0, x, y) == p3.choice(0, x, y);
+    }
+  EXPECT_EQ(same12, 10000);
+  EXPECT_LT(same13, 4000);  // about a quarter agree by chance
+}
+
+TEST(WindowCode, RealFramesGrowLessSimilarWithDistance) {
+  SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg2_desk_first50");
+  const TumSequence seq = TumSequence::open(folder);
+  const WindowPattern pattern({640, 480}, KeyframeSettings{});
+  const WindowCode first = encode_windows(seq.load(0).rgb, pattern);
+  const double near = window_similarity(first, encode_windows(seq.load(1).rgb, pattern));
+  const double far = window_similarity(first, encode_windows(seq.load(49).rgb, pattern));
+  EXPECT_GT(near, 0.85);
+  EXPECT_LT(far, near);
+}
+
+TEST(KeyframeRule, TakesTheMinimumOverTheKeyframeAndItsNeighbours) {
+  KeyframeSettings settings;
+  settings.pyramid_levels = 1;
+  const WindowPattern pattern({640, 480}, settings);
+  std::vector<WindowCode> codes;
+  for (int boundary : {320, 320, 320, 100}) codes.push_back(encode_windows(two_halves(boundary), pattern));
+  // Frame 3 differs from frames 0-2 in pixel columns 100..320, i.e. 110 of 320 window
+  // columns: zeta = 1 - 110/320 = 0.656 < 0.7.
+  const KeyframeDecision d = decide_keyframe(codes, 1, 3, 100, 100, settings);
+  EXPECT_TRUE(d.is_keyframe);
+  EXPECT_FALSE(d.forced_by_tracking);
+  EXPECT_NEAR(d.similarity, 1.0 - 110.0 / 320.0, 1e-12);
+  const KeyframeDecision same = decide_keyframe(codes, 0, 2, 100, 100, settings);
+  EXPECT_FALSE(same.is_keyframe);
+  EXPECT_DOUBLE_EQ(same.similarity, 1.0);
+  // The tracking guard: fewer than half the reference keyframe's matches.
+  EXPECT_TRUE(decide_keyframe(codes, 0, 2, 40, 100, settings).forced_by_tracking);
+}
+
+}  // namespace
+}  // namespace slamkit
