@@ -1,0 +1,20 @@
+#pragma once
+// Every setting of a run, one struct per module, with the SPEC's defaults. A run writes the
+// settings it used (settings.yaml) so that any result can be reproduced.
+#include "core/settings/keyframe_settings.h"
+#include "core/settings/matcher_settings.h"
+#include "core/settings/orb_settings.h"
+#include "core/settings/pipeline_settings.h"
+#include "core/settings/tracking_settings.h"
+
+namespace slamkit {
+
+struct Settings {
+  OrbSettings orb;
+  MatcherSettings matcher;
+  TrackingSettings tracking;
+  KeyframeSettings keyframes;
+  PipelineSettings pipeline;
+};
+
+}  // namespace slamkit

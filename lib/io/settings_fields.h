@@ -1,0 +1,144 @@
+#pragma once
+// The one list of every settings field with its YAML name, walked by the reader and the
+// writer alike (a visitor), so that adding a setting is one line here.
+// A visitor provides: field(name, value&) for numbers, booleans and enums, and
+// section(name, callable) for nested structs.
+#include <string>
+#include <vector>
+
+#include "core/settings/settings.h"
+
+namespace slamkit {
+
+template <class V>
+void visit_fields(OrbSettings& s, V& v) {
+  v.field("num_features", s.num_features);
+  v.field("pyramid_levels", s.pyramid_levels);
+  v.field("scale_factor", s.scale_factor);
+  v.field("fast_type", s.fast_type);
+  v.field("fast_threshold", s.fast_threshold);
+  v.field("fast_min_threshold", s.fast_min_threshold);
+  v.field("spread_over_image", s.spread_over_image);
+  v.field("cell_size", s.cell_size);
+  v.field("shi_tomasi_block_size", s.shi_tomasi_block_size);
+  v.field("edge_threshold", s.edge_threshold);
+}
+
+template <class V>
+void visit_fields(MatcherSettings& s, V& v) {
+  v.field("backend", s.backend);
+  v.field("lsh_table_number", s.lsh_table_number);
+  v.field("lsh_key_size", s.lsh_key_size);
+  v.field("lsh_multi_probe_level", s.lsh_multi_probe_level);
+  v.field("lsh_seed", s.lsh_seed);
+  v.field("ratio", s.ratio);
+  v.field("mutual_check", s.mutual_check);
+  v.field("max_distance", s.max_distance);
+  v.field("projection_radius", s.projection_radius);
+  v.field("projection_max_distance", s.projection_max_distance);
+  v.field("projection_ratio", s.projection_ratio);
+  v.field("projection_octave_window", s.projection_octave_window);
+  v.field("grid_cell_size", s.grid_cell_size);
+}
+
+template <class V>
+void visit_fields(RansacSettings& s, V& v) {
+  v.field("threshold_base", s.threshold_base);
+  v.field("threshold_quadratic", s.threshold_quadratic);
+  v.field("max_iterations", s.max_iterations);
+  v.field("confidence", s.confidence);
+  v.field("min_sample_spread", s.min_sample_spread);
+  v.field("min_sample_shape", s.min_sample_shape);
+  v.field("seed", s.seed);
+}
+
+template <class V>
+void visit_fields(PointToPlaneSettings& s, V& v) {
+  v.field("pyramid_levels", s.pyramid_levels);
+  v.field("iterations_per_level", s.iterations_per_level);
+  v.field("max_pair_distance", s.max_pair_distance);
+  v.field("max_normal_angle_deg", s.max_normal_angle_deg);
+  v.field("max_neighbour_depth_ratio", s.max_neighbour_depth_ratio);
+  v.field("convergence_rotation", s.convergence_rotation);
+  v.field("convergence_translation", s.convergence_translation);
+  v.field("min_correspondences", s.min_correspondences);
+  v.field("min_eigenvalue", s.min_eigenvalue);
+}
+
+template <class V>
+void visit_fields(MotionBaSettings& s, V& v) {
+  v.field("rounds", s.rounds);
+  v.field("iterations_per_round", s.iterations_per_round);
+  v.field("robust_rounds", s.robust_rounds);
+  v.field("chi2_2d", s.chi2_2d);
+  v.field("chi2_3d", s.chi2_3d);
+  v.field("use_depth", s.use_depth);
+  v.field("virtual_bf", s.virtual_bf);
+  v.field("min_inliers", s.min_inliers);
+}
+
+template <class V>
+void visit_fields(FailureSettings& s, V& v) {
+  v.field("max_speed", s.max_speed);
+  v.field("max_angular_speed_deg", s.max_angular_speed_deg);
+  v.field("min_dt", s.min_dt);
+  v.field("min_inliers", s.min_inliers);
+}
+
+template <class V>
+void visit_fields(TrackingSettings& s, V& v) {
+  v.field("min_pairs_for_svd", s.min_pairs_for_svd);
+  v.section("ransac", s.ransac);
+  v.section("point_to_plane", s.point_to_plane);
+  v.section("motion_ba", s.motion_ba);
+  v.section("failure", s.failure);
+}
+
+template <class V>
+void visit_fields(KeyframeSettings& s, V& v) {
+  v.field("similarity_threshold", s.similarity_threshold);
+  v.field("pyramid_levels", s.pyramid_levels);
+  v.field("scale_factor", s.scale_factor);
+  v.field("pattern_seed", s.pattern_seed);
+  v.field("neighbour_frames", s.neighbour_frames);
+  v.field("min_tracked_ratio", s.min_tracked_ratio);
+}
+
+template <class V>
+void visit_fields(PipelineSettings& s, V& v) {
+  v.field("threads", s.threads);
+  v.field("chunk_frames", s.chunk_frames);
+  v.field("evaluate", s.evaluate);
+}
+
+template <class V>
+void visit_fields(Settings& s, V& v) {
+  v.section("orb", s.orb);
+  v.section("matcher", s.matcher);
+  v.section("tracking", s.tracking);
+  v.section("keyframes", s.keyframes);
+  v.section("pipeline", s.pipeline);
+}
+
+// Names of enum values in settings files.
+inline const char* enum_name(FastType t) { return t == FastType::kFast12 ? "fast12" : "fast9"; }
+inline const char* enum_name(MatcherBackend b) {
+  return b == MatcherBackend::kFlannLsh ? "flann_lsh" : "brute_force";
+}
+inline std::vector<FastType> enum_values(FastType) {
+  return {FastType::kFast12, FastType::kFast9};
+}
+inline std::vector<MatcherBackend> enum_values(MatcherBackend) {
+  return {MatcherBackend::kFlannLsh, MatcherBackend::kBruteForce};
+}
+template <class E>
+bool enum_from_name(const std::string& name, E& out) {
+  for (E candidate : enum_values(out))
+    if (name == enum_name(candidate)) {
+      out = candidate;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace slamkit

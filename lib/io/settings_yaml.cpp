@@ -1,0 +1,124 @@
+#include "io/settings_yaml.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <set>
+#include <type_traits>
+
+#include "core/error.h"
+#include "io/settings_fields.h"
+
+namespace slamkit {
+namespace {
+
+class YamlWriter {
+ public:
+  explicit YamlWriter(YAML::Emitter& out) : out_(out) {}
+
+  template <class T>
+  void field(const char* name, T& value) {
+    out_ << YAML::Key << name << YAML::Value;
+    if constexpr (std::is_enum_v<T>) {
+      out_ << enum_name(value);
+    } else {
+      out_ << value;
+    }
+  }
+
+  template <class S>
+  void section(const char* name, S& settings) {
+    out_ << YAML::Key << name << YAML::Value << YAML::BeginMap;
+    visit_fields(settings, *this);
+    out_ << YAML::EndMap;
+  }
+
+ private:
+  YAML::Emitter& out_;
+};
+
+class YamlReader {
+ public:
+  YamlReader(const YAML::Node& node, std::string prefix, const std::string& path)
+      : node_(node), prefix_(std::move(prefix)), path_(path) {}
+
+  template <class T>
+  void field(const char* name, T& value) {
+    const YAML::Node child = take(name);
+    if (!child) return;
+    if constexpr (std::is_enum_v<T>) {
+      if (!enum_from_name(child.as<std::string>(), value))
+        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name);
+    } else {
+      try {
+        value = child.as<T>();
+      } catch (const YAML::Exception&) {
+        fail(child, prefix_ + name + " has the wrong type: '" + child.Scalar() + "'");
+      }
+    }
+  }
+
+  template <class S>
+  void section(const char* name, S& settings) {
+    const YAML::Node child = take(name);
+    if (!child) return;
+    if (!child.IsMap()) fail(child, prefix_ + name + " must be a map of settings");
+    YamlReader nested(child, prefix_ + name + ".", path_);
+    visit_fields(settings, nested);
+    nested.reject_unknown_keys();
+  }
+
+  void reject_unknown_keys() const {
+    for (const auto& entry : node_) {
+      const std::string key = entry.first.as<std::string>();
+      if (!known_.count(key)) fail(entry.first, "unknown setting '" + prefix_ + key + "'");
+    }
+  }
+
+ private:
+  YAML::Node take(const char* name) {
+    known_.insert(name);
+    return node_[name];
+  }
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
+    throw_input_error(path_, at.Mark().line + 1, message);
+  }
+
+  YAML::Node node_;
+  std::string prefix_;
+  const std::string& path_;
+  std::set<std::string> known_;
+};
+
+}  // namespace
+
+void read_settings_yaml(const std::filesystem::path& path, Settings& settings) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw_input_error(name, "settings file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(name);
+  } catch (const YAML::Exception& e) {
+    throw_input_error(name, e.mark.line + 1, "YAML error: " + e.msg);
+  }
+  if (root.IsNull()) return;  // an empty file: all defaults
+  if (!root.IsMap()) throw_input_error(name, "expected a YAML map of settings sections");
+  YamlReader reader(root, "", name);
+  visit_fields(settings, reader);
+  reader.reject_unknown_keys();
+}
+
+void write_settings_yaml(const std::filesystem::path& path, const Settings& settings) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  YamlWriter writer(out);
+  Settings copy = settings;  // the visitor takes fields by reference; the writer only reads
+  visit_fields(copy, writer);
+  out << YAML::EndMap;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path);
+  file << out.c_str() << "\n";
+  if (!file) throw_input_error(path.string(), "cannot write file");
+}
+
+}  // namespace slamkit
