@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "io/settings_fields.h"
 
 namespace slamkit {
@@ -21,6 +22,8 @@ class YamlWriter {
     out_ << YAML::Key << name << YAML::Value;
     if constexpr (std::is_enum_v<T>) {
       out_ << enum_name(value);
+    } else if constexpr (std::is_floating_point_v<T>) {
+      out_ << format_exact(value);
     } else {
       out_ << value;
     }

@@ -2,20 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <charconv>
 #include <fstream>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "core/pose.h"
 #include "io/text_table.h"
 
 namespace slamkit {
-
-std::string format_exact(double value) {
-  char buffer[64];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
-  return std::string(buffer, end.ptr);
-}
 
 TrajectoryFile read_tum_trajectory(const std::filesystem::path& path) {
   const std::string name = path.string();

@@ -22,9 +22,6 @@ struct TrajectoryFile {
 // quaternion are skipped, and of a repeated timestamp only the last line is kept (as the
 // benchmark does; real TUM groundtruth has such repeats), each reported in warnings.
 // Quaternions are normalised; unsorted files are sorted, with a warning.
-// The shortest fixed-notation text that parses back to exactly `value`.
-std::string format_exact(double value);
-
 TrajectoryFile read_tum_trajectory(const std::filesystem::path& path);
 
 // Writes every number in the shortest fixed notation that reads back to the same double, so
