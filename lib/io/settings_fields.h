@@ -88,6 +88,9 @@ void visit_fields(FailureSettings& s, V& v) {
 template <class V>
 void visit_fields(TrackingSettings& s, V& v) {
   v.field("min_pairs_for_svd", s.min_pairs_for_svd);
+  v.field("local_map_keyframes", s.local_map_keyframes);
+  v.field("lost_search_radius_factor", s.lost_search_radius_factor);
+  v.field("min_matches_for_box", s.min_matches_for_box);
   v.section("ransac", s.ransac);
   v.section("point_to_plane", s.point_to_plane);
   v.section("motion_ba", s.motion_ba);

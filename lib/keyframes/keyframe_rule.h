@@ -15,11 +15,17 @@ struct KeyframeDecision {
   bool forced_by_tracking = false;
 };
 
-// codes[i] is frame i's code (at least up to `current`). tracked_matches is how many of the
-// current frame's features were matched to the map; reference_matches how many its
-// reference keyframe had (0 disables the guard).
-KeyframeDecision decide_keyframe(const std::vector<WindowCode>& codes, size_t latest_keyframe,
-                                 size_t current, int tracked_matches, int reference_matches,
+// `compared` holds the codes of the latest keyframe and its neighbour frames (see
+// keyframe_neighbours). tracked_matches is how many of the current frame's features were
+// matched to the map; reference_matches how many its reference keyframe had (0: no guard).
+KeyframeDecision decide_keyframe(const WindowCode& current,
+                                 const std::vector<const WindowCode*>& compared,
+                                 int tracked_matches, int reference_matches,
                                  const KeyframeSettings& settings);
+
+// Indices of the frames the current one is compared with: the latest keyframe and
+// settings.neighbour_frames frames on each side of it, all before `current`.
+std::vector<size_t> keyframe_neighbours(size_t latest_keyframe, size_t current,
+                                        const KeyframeSettings& settings);
 
 }  // namespace slamkit

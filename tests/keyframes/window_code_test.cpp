@@ -64,19 +64,30 @@ TEST(KeyframeRule, TakesTheMinimumOverTheKeyframeAndItsNeighbours) {
   KeyframeSettings settings;
   settings.pyramid_levels = 1;
   const WindowPattern pattern({640, 480}, settings);
-  std::vector<WindowCode> codes;
-  for (int boundary : {320, 320, 320, 100}) codes.push_back(encode_windows(two_halves(boundary), pattern));
-  // Frame 3 differs from frames 0-2 in pixel columns 100..320, i.e. 110 of 320 window
-  // columns: zeta = 1 - 110/320 = 0.656 < 0.7.
-  const KeyframeDecision d = decide_keyframe(codes, 1, 3, 100, 100, settings);
+  const WindowCode same = encode_windows(two_halves(320), pattern);
+  const WindowCode shifted = encode_windows(two_halves(300), pattern);
+  const WindowCode moved = encode_windows(two_halves(100), pattern);
+  // `moved` differs from `same` in pixel columns 100..320, i.e. 110 of 320 window columns:
+  // zeta = 1 - 110/320 = 0.656 < 0.7; from `shifted` in 100 of 320.
+  const KeyframeDecision d = decide_keyframe(moved, {&same, &shifted}, 100, 100, settings);
   EXPECT_TRUE(d.is_keyframe);
   EXPECT_FALSE(d.forced_by_tracking);
   EXPECT_NEAR(d.similarity, 1.0 - 110.0 / 320.0, 1e-12);
-  const KeyframeDecision same = decide_keyframe(codes, 0, 2, 100, 100, settings);
-  EXPECT_FALSE(same.is_keyframe);
-  EXPECT_DOUBLE_EQ(same.similarity, 1.0);
+  const KeyframeDecision close = decide_keyframe(shifted, {&same}, 100, 100, settings);
+  EXPECT_FALSE(close.is_keyframe);
+  EXPECT_NEAR(close.similarity, 1.0 - 10.0 / 320.0, 1e-12);
   // The tracking guard: fewer than half the reference keyframe's matches.
-  EXPECT_TRUE(decide_keyframe(codes, 0, 2, 40, 100, settings).forced_by_tracking);
+  const KeyframeDecision thin = decide_keyframe(shifted, {&same}, 40, 100, settings);
+  EXPECT_TRUE(thin.forced_by_tracking);
+  EXPECT_TRUE(thin.is_keyframe);
+}
+
+TEST(KeyframeRule, NeighboursAreAroundTheKeyframeAndBeforeTheCurrentFrame) {
+  KeyframeSettings settings;
+  settings.neighbour_frames = 1;
+  EXPECT_EQ(keyframe_neighbours(5, 9, settings), (std::vector<size_t>{4, 5, 6}));
+  EXPECT_EQ(keyframe_neighbours(5, 6, settings), (std::vector<size_t>{4, 5}));
+  EXPECT_EQ(keyframe_neighbours(0, 3, settings), (std::vector<size_t>{0, 1}));
 }
 
 }  // namespace

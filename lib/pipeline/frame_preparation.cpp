@@ -1,0 +1,38 @@
+#include "pipeline/frame_preparation.h"
+
+#include <exception>
+
+#include "features/orb_extractor.h"
+#include "core/stopwatch.h"
+
+namespace slamkit {
+
+std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t begin, size_t end,
+                                          const Settings& settings, const WindowPattern& pattern) {
+  std::vector<PreparedFrame> frames(end - begin);
+  std::vector<std::exception_ptr> errors(frames.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long k = 0; k < long(frames.size()); ++k) {
+    try {
+      PreparedFrame& out = frames[size_t(k)];
+      Stopwatch watch;
+      const RgbdFrame frame = sequence.load(begin + size_t(k));
+      out.decode_ms = watch.lap();
+      out.index = frame.index;
+      out.stamp = frame.stamp;
+      out.depth = frame.depth;
+      out.features = extract_orb(frame.rgb, sequence.camera(), settings.orb);
+      out.keypoint_depths = keypoint_depths(out.features, frame.depth);
+      out.features_ms = watch.lap();
+      out.window_code = encode_windows(frame.rgb, pattern);
+      out.window_code_ms = watch.lap();
+    } catch (...) {
+      errors[size_t(k)] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
+  return frames;
+}
+
+}  // namespace slamkit

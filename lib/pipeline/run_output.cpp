@@ -1,0 +1,119 @@
+#include "pipeline/run_output.h"
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "io/camera_yaml.h"
+#include "io/settings_yaml.h"
+#include "io/trajectory_io.h"
+
+namespace fs = std::filesystem;
+
+namespace slamkit {
+namespace {
+
+StageStats stats_of(const std::string& name, std::vector<double> values) {
+  StageStats s{name};
+  if (values.empty()) return s;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  s.median_ms = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  for (double v : values) s.mean_ms += v / double(n);
+  s.max_ms = values.back();
+  return s;
+}
+
+void write_tracking_csv(const fs::path& path, const RunResult& result) {
+  std::ofstream out(path);
+  out << "index,stamp,solver,features,matches,pairs_3d,inliers,refined,lost,failure,keyframe,"
+         "similarity,decode_ms,features_ms,window_code_ms,match_ms,pose_ms,refine_ms,"
+         "keyframe_ms\n";
+  char stamp[32];
+  for (size_t i = 0; i < result.frames.size(); ++i) {
+    const TrackedFrame& f = result.frames[i];
+    const FrameTiming& t = result.timing[i];
+    std::snprintf(stamp, sizeof stamp, "%.6f", f.stamp);
+    out << f.index << ',' << stamp << ',' << solver_name(f.solver) << ',' << f.features << ','
+        << f.matches << ',' << f.pairs_3d << ',' << f.inliers << ',' << int(f.refined) << ','
+        << int(f.lost) << ',' << f.failure << ',' << int(f.keyframe) << ',' << f.similarity << ','
+        << t.decode_ms << ',' << t.features_ms << ',' << t.window_code_ms << ',' << f.match_ms
+        << ',' << f.pose_ms << ',' << f.refine_ms << ',' << f.keyframe_ms << '\n';
+  }
+  if (!out) throw_input_error(path.string(), "cannot write file");
+}
+
+}  // namespace
+
+TimingSummary summarise_timing(const RunResult& result) {
+  std::vector<double> decode, features, code, match, pose, refine, keyframe, tracking;
+  for (size_t i = 0; i < result.frames.size(); ++i) {
+    const TrackedFrame& f = result.frames[i];
+    const FrameTiming& t = result.timing[i];
+    decode.push_back(t.decode_ms);
+    features.push_back(t.features_ms);
+    code.push_back(t.window_code_ms);
+    match.push_back(f.match_ms);
+    pose.push_back(f.pose_ms);
+    refine.push_back(f.refine_ms);
+    keyframe.push_back(f.keyframe_ms);
+    tracking.push_back(t.features_ms + t.window_code_ms + f.match_ms + f.pose_ms + f.refine_ms +
+                       f.keyframe_ms);
+  }
+  TimingSummary s;
+  s.stages = {stats_of("decode", decode),     stats_of("features", features),
+              stats_of("window_code", code),  stats_of("match", match),
+              stats_of("pose", pose),         stats_of("refine", refine),
+              stats_of("keyframe", keyframe)};
+  s.tracking_median_ms = stats_of("tracking", tracking).median_ms;
+  const double wall = result.prepare_seconds + result.track_seconds;
+  s.frames_per_second = wall > 0 ? double(result.frames.size()) / wall : 0;
+  return s;
+}
+
+std::vector<std::string> describe_failures(const RunResult& result) {
+  std::vector<std::string> lines;
+  const auto& frames = result.frames;
+  for (size_t i = 0; i < frames.size(); ++i) {
+    if (!frames[i].lost || (i > 0 && frames[i - 1].lost)) continue;
+    size_t end = i;
+    while (end + 1 < frames.size() && frames[end + 1].lost) ++end;
+    std::string line = "frame " + std::to_string(frames[i].index);
+    if (end > i) line = "frames " + std::to_string(frames[i].index) + "-" + std::to_string(frames[end].index);
+    line += " lost (" + frames[i].failure + "), motion model used; ";
+    line += end + 1 < frames.size()
+                ? "tracking recovered at frame " + std::to_string(frames[end + 1].index) + " after " +
+                      std::to_string(end - i + 1) + " frame(s)"
+                : "not recovered before the end";
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+void write_run_outputs(const fs::path& dir, const std::string& sequence_name,
+                       const Camera& camera, const Settings& settings, const RunResult& result) {
+  fs::create_directories(dir);
+  write_tum_trajectory(dir / "trajectory.txt", result.trajectory(),
+                       "slamkit trajectory of " + sequence_name + " (T_w_c, every frame)");
+  write_tum_trajectory(dir / "keyframes.txt", result.keyframe_trajectory(),
+                       "slamkit keyframes of " + sequence_name);
+  write_tracking_csv(dir / "tracking.csv", result);
+  write_settings_yaml(dir / "settings.yaml", settings);
+  write_camera_yaml(dir / "camera.yaml", camera);
+
+  const TimingSummary timing = summarise_timing(result);
+  nlohmann::json json;
+  json["sequence"] = sequence_name;
+  json["frames"] = result.frames.size();
+  json["threads"] = result.threads;
+  json["prepare_seconds"] = result.prepare_seconds;
+  json["track_seconds"] = result.track_seconds;
+  json["frames_per_second"] = timing.frames_per_second;
+  json["tracking_median_ms"] = timing.tracking_median_ms;
+  for (const StageStats& s : timing.stages)
+    json["stages"][s.name] = {{"median_ms", s.median_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
+  std::ofstream(dir / "timing.json") << json.dump(2) << "\n";
+}
+
+}  // namespace slamkit

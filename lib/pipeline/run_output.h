@@ -1,0 +1,32 @@
+#pragma once
+// A run's folder (DESIGN): trajectory.txt and keyframes.txt (TUM format), tracking.csv (one
+// row a frame), settings.yaml and camera.yaml (to reproduce it), timing.json.
+#include <filesystem>
+#include <string>
+
+#include "core/camera.h"
+#include "core/settings/settings.h"
+#include "pipeline/batch_engine.h"
+
+namespace slamkit {
+
+void write_run_outputs(const std::filesystem::path& dir, const std::string& sequence_name,
+                       const Camera& camera, const Settings& settings, const RunResult& result);
+
+// Per-stage statistics of a run, as written to timing.json.
+struct StageStats {
+  std::string name;
+  double median_ms = 0, mean_ms = 0, max_ms = 0;
+};
+struct TimingSummary {
+  std::vector<StageStats> stages;
+  double tracking_median_ms = 0;  // everything after image decode, per frame
+  double frames_per_second = 0;   // frames over the whole run's wall time
+};
+TimingSummary summarise_timing(const RunResult& result);
+
+// Where tracking failed and how soon it came back, one line per failure episode
+// ("frames 120-121 lost (implausible jump); tracking recovered at frame 122").
+std::vector<std::string> describe_failures(const RunResult& result);
+
+}  // namespace slamkit

@@ -1,0 +1,34 @@
+#pragma once
+// What tracking did with one frame: its pose and the numbers behind it (tracking.csv).
+#include <Eigen/Geometry>
+#include <string>
+
+namespace slamkit {
+
+enum class PoseSolver {
+  kFirstFrame,    // the first frame defines the world frame
+  kSvdRansac,     // >= 50 3D-3D pairs: closed form in RANSAC (paper)
+  kPointToPlane,  // fewer: dense point-to-plane alignment (paper)
+  kMotionModel,   // tracking failed: the velocity model gives the pose (paper)
+};
+const char* solver_name(PoseSolver solver);
+
+struct TrackedFrame {
+  size_t index = 0;
+  double stamp = 0;
+  Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+  PoseSolver solver = PoseSolver::kFirstFrame;
+  int features = 0;      // keypoints extracted
+  int matches = 0;       // keypoints matched to map points
+  int pairs_3d = 0;      // matches with valid depth (3D-3D pairs)
+  int inliers = 0;       // matches kept by the pose solvers
+  bool refined = false;  // motion-only bundle adjustment succeeded
+  bool lost = false;     // the solvers failed; the pose is the motion model's
+  std::string failure;   // why, when lost
+  bool keyframe = false;
+  double similarity = 1;  // zeta against the latest keyframe and its neighbours
+  // Per-step wall time, milliseconds.
+  double match_ms = 0, pose_ms = 0, refine_ms = 0, keyframe_ms = 0;
+};
+
+}  // namespace slamkit

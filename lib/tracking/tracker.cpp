@@ -1,0 +1,308 @@
+#include "tracking/tracker.h"
+
+#include <algorithm>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "features/descriptor_matcher.h"
+#include "features/projection_matcher.h"
+#include "keyframes/keyframe_rule.h"
+#include "core/stopwatch.h"
+#include "tracking/failure_check.h"
+#include "tracking/icp_svd_ransac.h"
+#include "tracking/motion_model.h"
+#include "tracking/motion_only_ba.h"
+#include "tracking/point_to_plane.h"
+
+namespace slamkit {
+
+const char* solver_name(PoseSolver solver) {
+  switch (solver) {
+    case PoseSolver::kFirstFrame:
+      return "first";
+    case PoseSolver::kSvdRansac:
+      return "svd_ransac";
+    case PoseSolver::kPointToPlane:
+      return "point_to_plane";
+    case PoseSolver::kMotionModel:
+      return "motion_model";
+  }
+  return "?";
+}
+
+Tracker::Tracker(const Camera& camera, const Settings& settings)
+    : camera_(camera), settings_(settings) {
+  if (!camera_.distortion.is_zero()) {
+    // Dense alignment works in pinhole geometry; the recorded depth is in the lens's.
+    const cv::Matx33d K(camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
+    const cv::Matx<double, 1, 5> d(camera_.distortion.k1, camera_.distortion.k2,
+                                   camera_.distortion.p1, camera_.distortion.p2,
+                                   camera_.distortion.k3);
+    cv::initUndistortRectifyMap(K, d, cv::noArray(), K, {camera_.width, camera_.height},
+                                CV_32FC1, undistort_map_x_, undistort_map_y_);
+  }
+}
+
+TrackedFrame Tracker::track(const PreparedFrame& frame) {
+  TrackedFrame record;
+  record.index = frame.index;
+  record.stamp = frame.stamp;
+  record.features = int(frame.features.size());
+  window_codes_[frame.index] = frame.window_code;
+
+  if (poses_.empty()) {  // the first frame defines the world frame and the first keyframe
+    record.keyframe = true;
+    insert_keyframe(frame, record.T_w_c, {});
+  } else {
+    Stopwatch watch;
+    const Eigen::Isometry3d guess = predict_pose(frame.stamp);
+    std::vector<Match> matches = match_local_map(frame, guess);
+    record.matches = int(matches.size());
+    record.match_ms = watch.lap();
+
+    PoseEstimate estimate = estimate_pose(frame, matches, guess, record);
+    record.pose_ms = watch.lap();
+    if (estimate.ok) refine_pose(frame, estimate, record);
+    record.refine_ms = watch.lap();
+
+    if (estimate.ok) {
+      const MotionCheck check = check_tracking(poses_.back().T_w_c, estimate.T_w_c,
+                                               frame.stamp - poses_.back().stamp,
+                                               estimate.support, settings_.tracking.failure);
+      if (!check.ok())
+        estimate.failure = check.failure == TrackingFailure::kTooFewInliers ? "too few inliers"
+                                                                            : "implausible jump";
+      estimate.ok = check.ok();
+    }
+    if (!estimate.ok) {
+      record.lost = true;
+      record.failure = estimate.failure;
+      record.solver = PoseSolver::kMotionModel;
+      estimate.T_w_c = motion_model_pose(frame.stamp);
+    }
+    record.T_w_c = estimate.T_w_c;
+    record.inliers = int(estimate.inliers.size());
+    if (!record.lost) decide_and_insert_keyframe(frame, estimate.inliers, record);
+    record.keyframe_ms = watch.lap();
+  }
+  poses_.push_back({frame.stamp, record.T_w_c});
+  previous_depth_ = frame.depth;
+  previous_lost_ = record.lost;
+  return record;
+}
+
+Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
+  if (poses_.size() < 2) return poses_.back().T_w_c;
+  return predict_constant_velocity(poses_[poses_.size() - 2], poses_.back(), stamp);
+}
+
+std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
+                                                     const Eigen::Isometry3d& T_w_c_guess) const {
+  const std::vector<int> ids = map_.local_point_ids(size_t(settings_.tracking.local_map_keyframes));
+  MapPointSet points;
+  points.descriptors.create(int(ids.size()), 32, CV_8U);
+  for (size_t k = 0; k < ids.size(); ++k) {
+    const MapPoint& p = map_.point(ids[k]);
+    points.points_w.push_back(p.p_w);
+    points.octaves.push_back(p.octave);
+    p.descriptor.copyTo(points.descriptors.row(int(k)));
+  }
+  const KeypointGrid grid(frame.features.undistorted, settings_.matcher.grid_cell_size);
+  MatcherSettings matcher = settings_.matcher;
+  // After a failure the prediction is poor: search a wider window (ORB-SLAM2 widens too).
+  if (previous_lost_) matcher.projection_radius *= settings_.tracking.lost_search_radius_factor;
+  std::vector<Match> matches;
+  for (const ProjectionMatch& m :
+       match_by_projection(points, T_w_c_guess, camera_, frame.features, grid, matcher))
+    matches.push_back({ids[size_t(m.point)], m.keypoint});
+  if (int(matches.size()) >= settings_.tracking.min_pairs_for_svd) return matches;
+
+  // Too few for the closed form: add descriptor matches against the latest keyframe, which
+  // need no pose prior (this is what re-acquires after a fast motion). Keypoints already
+  // matched by projection keep their match.
+  std::vector<bool> taken(frame.features.size(), false);
+  for (const Match& m : matches) taken[size_t(m.keypoint)] = true;
+  for (const Match& m : match_reference_keyframe(frame))
+    if (!taken[size_t(m.keypoint)]) {
+      taken[size_t(m.keypoint)] = true;
+      matches.push_back(m);
+    }
+  return matches;
+}
+
+std::vector<Tracker::Match> Tracker::match_reference_keyframe(const PreparedFrame& frame) const {
+  const Keyframe& reference = map_.keyframes().back();
+  std::vector<Match> matches;
+  if (frame.features.descriptors.empty() || reference.descriptors.empty()) return matches;
+  for (const cv::DMatch& m :
+       match_descriptors(frame.features.descriptors, reference.descriptors, settings_.matcher)) {
+    const int id = reference.point_ids[size_t(m.trainIdx)];
+    if (id >= 0) matches.push_back({id, m.queryIdx});
+  }
+  return matches;
+}
+
+Tracker::PoseEstimate Tracker::estimate_pose(const PreparedFrame& frame,
+                                             const std::vector<Match>& matches,
+                                             const Eigen::Isometry3d& T_w_c_guess,
+                                             TrackedFrame& record) const {
+  record.pairs_3d = int(std::count_if(matches.begin(), matches.end(), [&](const Match& m) {
+    return frame.keypoint_depths[size_t(m.keypoint)] > 0;
+  }));
+  if (record.pairs_3d >= settings_.tracking.min_pairs_for_svd) {
+    record.solver = PoseSolver::kSvdRansac;
+    PoseEstimate estimate = align_svd_ransac(frame, matches, T_w_c_guess);
+    if (estimate.ok) return estimate;
+  }
+  record.solver = PoseSolver::kPointToPlane;
+  return align_point_to_plane(frame, matches, T_w_c_guess);
+}
+
+Tracker::PoseEstimate Tracker::align_svd_ransac(const PreparedFrame& frame,
+                                                const std::vector<Match>& matches,
+                                                const Eigen::Isometry3d& T_w_c_guess) const {
+  // Map points are expressed in the predicted camera, so that the RANSAC threshold sees
+  // camera depths; the solved transform is then the correction of the prediction.
+  const Eigen::Isometry3d T_guess_w = T_w_c_guess.inverse();
+  std::vector<Eigen::Vector3d> q_guess, q_curr;
+  std::vector<size_t> pair_match;
+  for (size_t k = 0; k < matches.size(); ++k) {
+    const float z = frame.keypoint_depths[size_t(matches[k].keypoint)];
+    if (z <= 0) continue;
+    q_guess.push_back(T_guess_w * map_.point(matches[k].point_id).p_w);
+    q_curr.push_back(camera_.back_project(frame.features.undistorted[size_t(matches[k].keypoint)], z));
+    pair_match.push_back(k);
+  }
+  const RigidFit fit = icp_svd_ransac(q_guess, q_curr, settings_.tracking.ransac);
+  PoseEstimate estimate;
+  if (!fit.ok()) {
+    estimate.failure = "RANSAC found no consistent pose";
+    return estimate;
+  }
+  estimate.T_w_c = T_w_c_guess * fit.T_prev_curr;
+  std::vector<bool> keep(matches.size(), true);  // matches without depth go on to the BA
+  for (size_t i = 0; i < pair_match.size(); ++i) keep[pair_match[i]] = fit.inliers[i];
+  for (size_t k = 0; k < matches.size(); ++k)
+    if (keep[k]) estimate.inliers.push_back(matches[k]);
+  estimate.support = fit.num_inliers;
+  estimate.ok = true;
+  return estimate;
+}
+
+Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
+                                                    const std::vector<Match>& matches,
+                                                    const Eigen::Isometry3d& T_w_c_guess) const {
+  const Eigen::Isometry3d& T_w_prev = poses_.back().T_w_c;
+  // The co-visible region: the matched points as the previous frame saw them; with too few
+  // of them to bound anything, the whole image.
+  cv::Rect box;
+  if (int(matches.size()) >= settings_.tracking.min_matches_for_box) {
+    std::vector<cv::Point2f> corners;
+    const Eigen::Isometry3d T_prev_w = T_w_prev.inverse();
+    for (const Match& m : matches) {
+      const Eigen::Vector3d p = T_prev_w * map_.point(m.point_id).p_w;
+      if (p.z() <= 0) continue;
+      const Eigen::Vector2d uv = camera_.project(p);
+      corners.emplace_back(float(uv.x()), float(uv.y()));
+    }
+    if (!corners.empty())
+      box = cv::boundingRect(corners) & cv::Rect(0, 0, camera_.width, camera_.height);
+  }
+  const DenseAlignment dense =
+      point_to_plane(pinhole_depth(previous_depth_), pinhole_depth(frame.depth), camera_,
+                     T_w_prev.inverse() * T_w_c_guess, box, settings_.tracking.point_to_plane);
+  PoseEstimate estimate;
+  estimate.T_w_c = T_w_prev * dense.T_prev_curr;
+  estimate.inliers = matches;  // unchecked: the motion-only BA sorts them
+  estimate.support = dense.num_correspondences;
+  estimate.ok = dense.ok();
+  if (!estimate.ok)
+    estimate.failure = dense.status == DenseAlignStatus::kIllConditioned ? "dense: ill-conditioned"
+                       : dense.status == DenseAlignStatus::kTooFewCorrespondences
+                           ? "dense: too few correspondences"
+                           : "dense: not converged";
+  return estimate;
+}
+
+void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
+                          TrackedFrame& record) const {
+  if (int(estimate.inliers.size()) < settings_.tracking.motion_ba.min_inliers) return;
+  std::vector<PointObservation> observations;
+  for (const Match& m : estimate.inliers) {
+    const cv::KeyPoint& kp = frame.features.keypoints[size_t(m.keypoint)];
+    observations.push_back({map_.point(m.point_id).p_w,
+                            frame.features.undistorted[size_t(m.keypoint)],
+                            frame.keypoint_depths[size_t(m.keypoint)],
+                            frame.features.pyramid.scales[size_t(kp.octave)]});
+  }
+  const PoseRefinement refined =
+      motion_only_ba(observations, camera_, estimate.T_w_c, settings_.tracking.motion_ba);
+  if (!refined.ok) return;  // the solver's estimate stands (dense alignment needs no points)
+  record.refined = true;
+  estimate.T_w_c = refined.T_w_c;
+  std::vector<Match> kept;
+  for (size_t i = 0; i < observations.size(); ++i)
+    if (refined.inliers[i]) kept.push_back(estimate.inliers[i]);
+  estimate.inliers = std::move(kept);
+  if (record.solver == PoseSolver::kSvdRansac) estimate.support = refined.num_inliers;
+}
+
+Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
+  // SPEC: a frame that is not a keyframe takes the mean velocities of the 2 keyframes
+  // before it, each over the interval that ends at that keyframe.
+  std::vector<StampedVelocity> velocities;
+  const auto& keyframes = map_.keyframes();
+  for (size_t k = keyframes.size(); k-- > 0 && velocities.size() < 2;) {
+    const size_t i = keyframes[k].frame_index;
+    if (i == 0) break;
+    velocities.insert(velocities.begin(), velocity_between(poses_[i - 1], poses_[i]));
+  }
+  if (velocities.size() < 2) return predict_pose(stamp);
+  return predict_linear_velocity(velocities[0], velocities[1], poses_.back(), stamp);
+}
+
+void Tracker::decide_and_insert_keyframe(const PreparedFrame& frame,
+                                         const std::vector<Match>& inliers, TrackedFrame& record) {
+  const Keyframe& latest = map_.keyframes().back();
+  std::vector<const WindowCode*> compared;
+  for (size_t i : keyframe_neighbours(latest.frame_index, frame.index, settings_.keyframes))
+    compared.push_back(&window_codes_.at(i));
+  const int reference_points = int(std::count_if(latest.point_ids.begin(), latest.point_ids.end(),
+                                                 [](int id) { return id >= 0; }));
+  const KeyframeDecision decision = decide_keyframe(frame.window_code, compared,
+                                                    int(inliers.size()), reference_points,
+                                                    settings_.keyframes);
+  record.similarity = decision.similarity;
+  record.keyframe = decision.is_keyframe;
+  if (decision.is_keyframe) insert_keyframe(frame, record.T_w_c, inliers);
+}
+
+void Tracker::insert_keyframe(const PreparedFrame& frame, const Eigen::Isometry3d& T_w_c,
+                              const std::vector<Match>& inliers) {
+  Keyframe keyframe;
+  keyframe.frame_index = frame.index;
+  keyframe.stamp = frame.stamp;
+  keyframe.T_w_c = T_w_c;
+  keyframe.keypoints = frame.features.keypoints;
+  keyframe.undistorted = frame.features.undistorted;
+  keyframe.depths = frame.keypoint_depths;
+  keyframe.descriptors = frame.features.descriptors;
+  keyframe.point_ids.assign(frame.features.size(), -1);
+  for (const Match& m : inliers) keyframe.point_ids[size_t(m.keypoint)] = m.point_id;
+  map_.insert_keyframe(std::move(keyframe), camera_);
+  // Codes older than the new keyframe's neighbours are never compared again.
+  const size_t n = size_t(std::max(0, settings_.keyframes.neighbour_frames));
+  window_codes_.erase(window_codes_.begin(),
+                      window_codes_.lower_bound(frame.index >= n ? frame.index - n : 0));
+}
+
+cv::Mat Tracker::pinhole_depth(const cv::Mat& depth) const {
+  if (undistort_map_x_.empty()) return depth;
+  cv::Mat out;
+  // Nearest neighbour: interpolating would blend foreground and background depths.
+  cv::remap(depth, out, undistort_map_x_, undistort_map_y_, cv::INTER_NEAREST,
+            cv::BORDER_CONSTANT, 0);
+  return out;
+}
+
+}  // namespace slamkit
