@@ -20,6 +20,7 @@ void visit_fields(OrbSettings& s, V& v) {
   v.field("fast_min_threshold", s.fast_min_threshold);
   v.field("spread_over_image", s.spread_over_image);
   v.field("cell_size", s.cell_size);
+  v.field("max_cell_share", s.max_cell_share);
   v.field("shi_tomasi_block_size", s.shi_tomasi_block_size);
   v.field("edge_threshold", s.edge_threshold);
 }

@@ -1,0 +1,19 @@
+#pragma once
+// Steered BRIEF descriptors (SPEC section 1).
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace slamkit {
+
+constexpr int kDescriptorBytes = 32;  // 256 bits
+
+// Steered BRIEF, 256 bits, with ORB's learned pattern, on `level_image` smoothed by a 7x7
+// Gaussian of sigma 2, rotated by each keypoint's angle. Keypoints are in level_image pixels;
+// they must lie at least 19 px inside it. Returns keypoints.size() x 32 CV_8U, row i for
+// keypoint i.
+cv::Mat steered_brief(const cv::Mat& level_image, const std::vector<cv::KeyPoint>& keypoints);
+
+// Hamming distance between two 32-byte descriptors (OpenCV's vectorised popcount).
+int descriptor_distance(const uchar* a, const uchar* b);
+
+}  // namespace slamkit
