@@ -1,0 +1,37 @@
+#pragma once
+// Absolute trajectory error: align the matched estimate to groundtruth, then measure each
+// matched pose's position error (the benchmark's evaluate_ate.py) and rotation error.
+#include <vector>
+
+#include "core/association.h"
+#include "core/trajectory.h"
+#include "eval/alignment.h"
+#include "eval/statistics.h"
+
+namespace slamkit::eval {
+
+struct AteResult {
+  Alignment alignment;
+  // Per matched pair, in estimate time order:
+  std::vector<double> stamps;                // estimate stamps
+  std::vector<Eigen::Vector3d> est_aligned;  // aligned estimated positions
+  std::vector<Eigen::Vector3d> gt_positions;
+  std::vector<double> trans_errors;    // metres: |aligned estimate - groundtruth|
+  std::vector<double> rot_errors_deg;  // angle of R_gt^-1 * R_aligned_estimate
+  ErrorStats trans;
+  ErrorStats rot_deg;
+};
+
+struct AteOptions {
+  AlignMethod align = AlignMethod::kSe3;
+  size_t align_first = 0;  // align on the first N pairs only (0 = all)
+};
+
+// `pairs` as from eval::associate (first: gt index, second: est index).
+AteResult compute_ate(const Trajectory& gt, const Trajectory& est,
+                      const std::vector<IndexPair>& pairs, const AteOptions& options);
+
+// The whole estimate (matched or not) moved by the alignment, for aligned.txt.
+Trajectory apply_alignment(const Trajectory& est, const Alignment& alignment);
+
+}  // namespace slamkit::eval

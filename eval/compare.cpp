@@ -1,0 +1,117 @@
+#include "eval/compare.h"
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+
+#include "core/error.h"
+#include "eval/metrics_json.h"
+
+namespace slamkit::eval {
+namespace {
+
+using nlohmann::json;
+
+struct Column {
+  const char* header;
+  const char* section;  // "ate" or "rpe"
+  const char* key;      // "rmse", or "trans.rmse" style for nested values
+};
+
+const Column kColumns[] = {
+    {"ATE pairs", "ate", "pairs"},
+    {"ATE rmse [m]", "ate", "rmse"},
+    {"ATE mean [m]", "ate", "mean"},
+    {"ATE median [m]", "ate", "median"},
+    {"ATE std [m]", "ate", "std"},
+    {"ATE min [m]", "ate", "min"},
+    {"ATE max [m]", "ate", "max"},
+    {"ATE rot rmse [deg]", "ate", "rot_deg.rmse"},
+    {"RPE pairs", "rpe", "pairs"},
+    {"RPE trans rmse [m]", "rpe", "trans.rmse"},
+    {"RPE rot rmse [deg]", "rpe", "rot_deg.rmse"},
+};
+
+// The cell text: integers as is, metres/degrees to 6 decimals (the benchmark's digits).
+std::string cell(const EvaluatedRun& run, const Column& c) {
+  if (!run.metrics.contains(c.section)) return "";
+  const json* v = &run.metrics[c.section];
+  std::string key = c.key;
+  for (size_t dot; (dot = key.find('.')) != std::string::npos; key = key.substr(dot + 1)) {
+    if (!v->contains(key.substr(0, dot))) return "";
+    v = &(*v)[key.substr(0, dot)];
+  }
+  if (!v->contains(key)) return "";
+  const json& x = (*v)[key];
+  if (x.is_number_integer()) return std::to_string(x.get<long long>());
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6f", x.get<double>());
+  return text;
+}
+
+std::ofstream open_output(const std::filesystem::path& path) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path);
+  if (!out) throw_input_error(path.string(), "cannot write file");
+  return out;
+}
+
+}  // namespace
+
+std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& dirs) {
+  std::vector<EvaluatedRun> runs;
+  std::set<std::string> names;
+  for (const auto& dir : dirs) {
+    EvaluatedRun run;
+    run.dir = dir;
+    run.metrics = read_metrics_file(dir / "metrics.json");
+    if (!run.metrics.contains("ate"))
+      throw_input_error((dir / "metrics.json").string(),
+                        "no \"ate\" section: run `slamkit eval ate` for this run first");
+    const json settings = run.metrics.value("settings", json::object());
+    run.name = settings.value("system_name", std::string());
+    if (run.name.empty()) run.name = std::filesystem::absolute(dir).lexically_normal().filename();
+    if (run.name.empty()) run.name = dir.string();
+    if (names.count(run.name)) run.name += " (" + dir.string() + ")";
+    names.insert(run.name);
+    run.sequence = settings.value("title", std::string());
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+void write_comparison_markdown(const std::filesystem::path& path,
+                               const std::vector<EvaluatedRun>& runs) {
+  std::ofstream out = open_output(path);
+  out << "| run | sequence |";
+  for (const Column& c : kColumns) out << " " << c.header << " |";
+  out << "\n|---|---|";
+  for (size_t k = 0; k < std::size(kColumns); ++k) out << "---:|";
+  out << "\n";
+  for (const EvaluatedRun& run : runs) {
+    out << "| " << run.name << " | " << run.sequence << " |";
+    for (const Column& c : kColumns) out << " " << cell(run, c) << " |";
+    out << "\n";
+  }
+}
+
+void write_comparison_csv(const std::filesystem::path& path,
+                          const std::vector<EvaluatedRun>& runs) {
+  std::ofstream out = open_output(path);
+  // Names may hold commas; quote them as CSV requires.
+  const auto quoted = [](const std::string& s) {
+    std::string q = "\"";
+    for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return q + "\"";
+  };
+  out << "run,sequence,dir";
+  for (const Column& c : kColumns) out << "," << quoted(c.header);
+  out << "\n";
+  for (const EvaluatedRun& run : runs) {
+    out << quoted(run.name) << "," << quoted(run.sequence) << "," << quoted(run.dir.string());
+    for (const Column& c : kColumns) out << "," << cell(run, c);
+    out << "\n";
+  }
+}
+
+}  // namespace slamkit::eval

@@ -1,0 +1,35 @@
+#pragma once
+// metrics.json: the results as data, which plots, comparisons and scripts read afterwards.
+// Layout (keep stable, see eval/README.md):
+//   {"ate": {...}, "rpe": {...}, "settings": {...}, "inputs": {"groundtruth", "estimate"},
+//    "coverage": {...}}
+// Each command writes its own sections and merges into an existing file.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "eval/ate.h"
+#include "eval/coverage.h"
+#include "eval/rpe.h"
+#include "eval/statistics.h"
+#include "io/trajectory_io.h"
+
+namespace slamkit::eval {
+
+nlohmann::json stats_json(const ErrorStats& s);  // rmse, mean, median, std, min, max
+nlohmann::json ate_json(const AteResult& ate);
+nlohmann::json rpe_json(const RpeResult& rpe, const RpeOptions& options);
+nlohmann::json coverage_json(const Coverage& c);
+// path, fnv1a64 checksum, poses, start, end, skipped-line counts and warnings.
+nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFile& file);
+
+// Merges `update` into the JSON file at `path` (created if missing): "ate" and "rpe" are
+// replaced whole, the other top-level objects ("settings", "inputs", "coverage") key by key,
+// so `eval ate` and `eval rpe` can share one file. Throws InputError if the existing file is
+// not a JSON object (rather than clobbering it).
+void merge_into_metrics_file(const std::filesystem::path& path, const nlohmann::json& update);
+
+// Reads a metrics.json; InputError naming the file when missing or malformed.
+nlohmann::json read_metrics_file(const std::filesystem::path& path);
+
+}  // namespace slamkit::eval

@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Plots of one evaluated run, drawn from the files `slamkit eval ate|rpe` wrote.
+
+  ate: ate_over_time  - absolute translational error over time with RMSE / mean / median
+                        lines and a mean +- std band;
+       trajectory_PL  - the trajectory in plane PL (xy, xz, yz): groundtruth, the aligned
+                        estimate coloured by its error, and the difference segments between
+                        matched poses (as evaluate_ate.py --plot draws them).
+  rpe: rpe_over_time  - translational and rotational relative error over time.
+Each is written as PNG and SVG (and PDF with --pdf).
+"""
+import argparse
+import json
+import sys
+
+import numpy as np
+
+from plot_style import STYLE, plt, save
+
+PLANE_AXES = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+
+
+def read_csv(path):
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    return np.atleast_1d(data)
+
+
+def break_gaps(t, *series):
+    """Copies with NaN inserted where the time step exceeds 5x the median step, so lines
+    do not bridge stretches without data (e.g. where groundtruth is missing)."""
+    if len(t) < 3:
+        return (t,) + series
+    dt = np.diff(t)
+    gaps = np.nonzero(dt > 5 * np.median(dt))[0] + 1
+    return tuple(np.insert(np.asarray(x, dtype=float), gaps, np.nan) for x in (t,) + series)
+
+
+def finish_axes(ax, t, values):
+    """Time limits, a zero baseline and headroom for the legend above the data."""
+    ax.set_xlim(t[0], t[-1])
+    ax.set_ylim(0, 1.4 * np.nanmax(values))
+    ax.legend(loc="upper center", ncol=3, framealpha=0.9, columnspacing=1.2)
+
+
+def stat_lines(ax, stats, unit):
+    """Horizontal RMSE / mean / median lines and the mean +- std band."""
+    mean, std = stats["mean"], stats["std"]
+    ax.axhspan(mean - std, mean + std, color="tab:blue", alpha=0.12,
+               label="mean ± std (std %.4f %s)" % (std, unit))
+    ax.axhline(stats["rmse"], color="tab:red", lw=1.2,
+               label="RMSE %.4f %s" % (stats["rmse"], unit))
+    ax.axhline(mean, color="tab:blue", lw=1.2, ls="--", label="mean %.4f %s" % (mean, unit))
+    ax.axhline(stats["median"], color="tab:green", lw=1.2, ls=":",
+               label="median %.4f %s" % (stats["median"], unit))
+
+
+def plot_ate_over_time(errors, metrics, args):
+    ate = metrics["ate"]
+    t, err = break_gaps(errors["time"] - errors["time"][0], errors["ate_m"])
+    fig, ax = plt.subplots(figsize=(7.0, 3.8))
+    ax.plot(t, err, color="0.25", lw=0.8, label="error per pose")
+    stat_lines(ax, ate, "m")
+    ax.set_xlabel("time since first matched pose [s]")
+    ax.set_ylabel("absolute translational error [m]")
+    finish_axes(ax, t, err)
+    ax.set_title("Absolute trajectory error: %s on %s\n(%d pose pairs, %s alignment)"
+                 % (args.system_name, args.title, ate["pairs"], ate["alignment"]["method"]))
+    return save(fig, args.out, "ate_over_time", args.pdf)
+
+
+def plot_trajectory(errors, metrics, plane, args):
+    a, b = PLANE_AXES[plane]
+    names = ("x", "y", "z")
+    est = np.stack([errors["est_tx"], errors["est_ty"], errors["est_tz"]], axis=1)
+    gt = np.stack([errors["gt_tx"], errors["gt_ty"], errors["gt_tz"]], axis=1)
+    fig, ax = plt.subplots(figsize=(6.4, 5.6))
+    # Difference segments between matched poses, below everything else.
+    segments = np.stack([est[:, [a, b]], gt[:, [a, b]]], axis=1)
+    from matplotlib.collections import LineCollection
+    ax.add_collection(LineCollection(segments, colors="tab:red", linewidths=0.6, alpha=0.6,
+                                     label="difference", zorder=1))
+    _, gt_a, gt_b = break_gaps(errors["time"], gt[:, a], gt[:, b])
+    ax.plot(gt_a, gt_b, color="black", lw=1.0, label="groundtruth", zorder=2)
+    sc = ax.scatter(est[:, a], est[:, b], c=errors["ate_m"], cmap="viridis", s=4, zorder=3,
+                    label="%s (aligned)" % args.system_name)
+    cbar = fig.colorbar(sc, ax=ax, shrink=0.85, pad=0.02)
+    cbar.set_label("absolute translational error [m]")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("%s [m]" % names[a])
+    ax.set_ylabel("%s [m]" % names[b])
+    ax.set_title("Trajectory (%s plane): %s on %s\nATE RMSE %.4f m over %d pairs"
+                 % (plane, args.system_name, args.title, metrics["ate"]["rmse"],
+                    metrics["ate"]["pairs"]))
+    ax.legend(loc="best", markerscale=3, framealpha=0.9)
+    return save(fig, args.out, "trajectory_" + plane, args.pdf)
+
+
+def plot_rpe_over_time(pairs, metrics, args):
+    rpe = metrics["rpe"]
+    t, trans, rot = break_gaps(pairs["time_i"] - pairs["time_i"][0], pairs["trans_m"],
+                               pairs["rot_deg"])
+    fig, (ax_t, ax_r) = plt.subplots(2, 1, figsize=(7.0, 6.0), sharex=True)
+    ax_t.plot(t, trans, color="0.25", lw=0.8, label="error per pair")
+    stat_lines(ax_t, rpe["trans"], "m")
+    ax_t.set_ylabel("translational error [m]")
+    finish_axes(ax_t, t, trans)
+    ax_r.plot(t, rot, color="0.25", lw=0.8, label="error per pair")
+    stat_lines(ax_r, rpe["rot_deg"], "deg")
+    ax_r.set_ylabel("rotational error [deg]")
+    ax_r.set_xlabel("time of the first pose of the pair [s]")
+    finish_axes(ax_r, t, rot)
+    unit = {"s": "s", "f": "frames", "m": "m", "deg": "deg"}[rpe["unit"]]
+    ax_t.set_title("Relative pose error over %g %s: %s on %s\n(%d pose pairs, %s convention)"
+                   % (rpe["delta"], unit, args.system_name, args.title, rpe["pairs"],
+                      rpe["convention"]))
+    return save(fig, args.out, "rpe_over_time", args.pdf)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("kind", choices=["ate", "rpe"])
+    parser.add_argument("--metrics", required=True, help="metrics.json")
+    parser.add_argument("--csv", required=True, help="errors.csv (ate) or rpe.csv (rpe)")
+    parser.add_argument("--out", required=True, help="output folder")
+    parser.add_argument("--title", default="sequence")
+    parser.add_argument("--system-name", default="estimate")
+    parser.add_argument("--planes", default="xy", help="comma-separated: xy,xz,yz")
+    parser.add_argument("--pdf", action="store_true")
+    args = parser.parse_args()
+
+    plt.rcParams.update(STYLE)
+    with open(args.metrics) as f:
+        metrics = json.load(f)
+    data = read_csv(args.csv)
+    if args.kind == "ate":
+        plot_ate_over_time(data, metrics, args)
+        for plane in args.planes.split(","):
+            if plane not in PLANE_AXES:
+                sys.exit("unknown plane '%s' (use xy, xz or yz)" % plane)
+            plot_trajectory(data, metrics, plane, args)
+    else:
+        plot_rpe_over_time(data, metrics, args)
+
+
+if __name__ == "__main__":
+    main()

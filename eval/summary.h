@@ -1,0 +1,15 @@
+#pragma once
+// The human summary printed by `slamkit eval`, in the style of the benchmark scripts'
+// --verbose output (one "name value unit" per line).
+#include <string>
+
+#include "eval/ate.h"
+#include "eval/coverage.h"
+#include "eval/rpe.h"
+
+namespace slamkit::eval {
+
+std::string ate_summary(const AteResult& ate, const Coverage& coverage);
+std::string rpe_summary(const RpeResult& rpe, const RpeOptions& options);
+
+}  // namespace slamkit::eval

@@ -1,0 +1,89 @@
+#pragma once
+// Pose solvers of the front end (SPEC section 2). "(paper)" values are the source's
+// defaults; "(ORB-SLAM2)" values are taken from ORB-SLAM2; "(ours)" values are our choice.
+#include <cstdint>
+
+namespace slamkit {
+
+// Closed-form SVD alignment of 3D-3D pairs inside RANSAC.
+struct RansacSettings {
+  // Inlier threshold on |q - T q'| (metres): base + quadratic * z^2, z the depth of q. The
+  // quadratic term follows the Kinect's axial noise (sigma ~ 1.4 mm * z^2, Khoshelham and
+  // Elberink 2012; 3 sigma of a pair gives ~6 mm * z^2), the base covers keypoint
+  // localisation (1 px is ~2 mm at 1 m) and depth quantisation. 2.6 cm at 1 m, 7.4 cm at 3 m.
+  double threshold_base = 0.02;        // metres (ours)
+  double threshold_quadratic = 0.006;  // metres per metre^2 (ours)
+  int max_iterations = 300;            // (ours) upper bound for the adaptive rule
+  double confidence = 0.99;            // (ours) adaptive stopping: P(one all-inlier sample)
+  // A minimal sample is rejected when two of its points are closer than this (metres) or
+  // when it is nearly collinear: 2 * area / longest_edge^2 below min_sample_shape (an
+  // equilateral triangle scores 0.87, a sliver 0).
+  double min_sample_spread = 0.02;  // metres (ours)
+  double min_sample_shape = 0.1;    // (ours)
+  uint32_t seed = 42;               // (ours) std::mt19937 seed: same input, same result
+};
+
+// Dense point-to-plane alignment, the paper's fallback when there are too few pairs.
+struct PointToPlaneSettings {
+  int pyramid_levels = 2;        // (paper) level l is the depth image halved l times
+  int iterations_per_level = 3;  // (paper) Gauss-Newton iterations on each level
+  // Projective association: a pair is rejected when its points are farther apart than
+  // this (metres) or their normals differ by more than max_normal_angle_deg.
+  // 0.2 m covers a guess a few degrees off at 3 m; at 0.1 m a wall seen at a slant can
+  // drop out of the first iteration and leave a direction unconstrained.
+  double max_pair_distance = 0.2;    // metres (ours)
+  double max_normal_angle_deg = 30;  // degrees (ours)
+  // Neighbours whose depths differ by more than this fraction of z give no normal (a
+  // depth edge, not a surface). A 80-degree grazing plane at 640 px still passes.
+  double max_neighbour_depth_ratio = 0.05;  // (ours)
+  // Converged when the last increment moves less than these (ours).
+  double convergence_rotation = 1e-3;     // radians (0.057 deg)
+  double convergence_translation = 1e-3;  // metres
+  // Fewer pairs than this on any level: failure (ours).
+  int min_correspondences = 100;
+  // Conditioning: smallest eigenvalue of the normal matrix per pair, rotations scaled by
+  // the RMS point distance (dimensionless, 0..1). A view of a single plane leaves 3
+  // directions unconstrained and scores ~0; a room corner scores ~0.01-0.1 (ours).
+  double min_eigenvalue = 1e-3;
+};
+
+// Motion-only bundle adjustment of the current pose (ORB-SLAM2's PoseOptimization).
+struct MotionBaSettings {
+  int rounds = 4;                 // (ORB-SLAM2) optimisation rounds, outliers re-classified
+  int iterations_per_round = 10;  // (ORB-SLAM2) Levenberg-Marquardt iterations per round
+  int robust_rounds = 2;          // (ORB-SLAM2) rounds using the Huber kernel; later ones none
+  double chi2_2d = 5.991;         // (ORB-SLAM2) 95% chi-square, 2 dof (pixels^2)
+  double chi2_3d = 7.815;         // (ORB-SLAM2) 95% chi-square, 3 dof
+  // RGB-D: a third residual on the virtual-stereo disparity bf/z (pixels), the RGB-D form
+  // of ORB-SLAM2's u_right term. Its noise grows with z^2, as the Kinect's does.
+  bool use_depth = true;   // (beyond) default on
+  double virtual_bf = 40;  // (ORB-SLAM2) "Camera.bf" of its TUM settings: fx * 7.7 cm
+  int min_inliers = 10;    // (ORB-SLAM2) fewer inliers: the refinement has failed
+};
+
+// Plausibility of a tracked pose.
+struct FailureSettings {
+  // Speeds above these between consecutive frames are a tracking failure, not motion.
+  // Handheld TUM sequences stay well under them (ours).
+  double max_speed = 3.0;              // metres per second
+  double max_angular_speed_deg = 200;  // degrees per second
+  double min_dt = 0.01;  // seconds; shorter gaps count as this long (no blow-up on dt ~ 0)
+  int min_inliers = 10;  // (ORB-SLAM2) fewer inlier matches: failure
+};
+
+struct TrackingSettings {
+  int min_pairs_for_svd = 50;   // (paper) fewer valid 3D pairs: dense point-to-plane instead
+  int local_map_keyframes = 8;  // (ours) the local map: points of the last N keyframes
+  // (ours) After a lost frame the predicted pose is poor: the projection search radius is
+  // multiplied by this (ORB-SLAM2 widens its window likewise).
+  double lost_search_radius_factor = 4;
+  // (ours) Dense alignment's co-visible box comes from the matched points when there are at
+  // least this many; with fewer the whole image is used.
+  int min_matches_for_box = 10;
+  RansacSettings ransac;
+  PointToPlaneSettings point_to_plane;
+  MotionBaSettings motion_ba;
+  FailureSettings failure;
+};
+
+}  // namespace slamkit

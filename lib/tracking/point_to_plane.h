@@ -1,0 +1,39 @@
+#pragma once
+// Dense point-to-plane alignment of two depth images (SPEC section 2), the paper's fallback
+// when there are too few 3D pairs for the closed form.
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/settings/tracking_settings.h"
+
+namespace slamkit {
+
+enum class DenseAlignStatus {
+  kConverged,
+  kNotConverged,           // still moving after the last iteration: tracking has failed
+  kTooFewCorrespondences,  // fewer than settings.min_correspondences pairs on some level
+  kIllConditioned,         // the geometry leaves a direction free (e.g. one plane in view)
+};
+
+struct DenseAlignment {
+  DenseAlignStatus status = DenseAlignStatus::kNotConverged;
+  // The estimate reached (the guess when no step was taken).
+  Eigen::Isometry3d T_prev_curr = Eigen::Isometry3d::Identity();
+  int num_correspondences = 0;  // pairs in the last iteration
+  double min_eigenvalue = 0;    // conditioning of the last normal matrix (see settings)
+  double rmse = 0;              // point-to-plane residual of the last iteration, metres
+  int iterations = 0;           // Gauss-Newton steps over all levels
+  bool ok() const { return status == DenseAlignStatus::kConverged; }
+};
+
+// Refines T_prev_curr (maps current-camera points into the previous camera) from an initial
+// guess. Depths are CV_32F metres (0 or outside the camera's valid range = none) in the
+// pinhole geometry of `camera`. Only previous-frame pixels inside box_prev (level-0 pixels;
+// the bounding box of the matched keypoints) are used; an empty box means the whole image.
+// Deterministic whatever the OpenMP thread count.
+DenseAlignment point_to_plane(const cv::Mat& depth_prev, const cv::Mat& depth_curr,
+                              const Camera& camera, const Eigen::Isometry3d& T_prev_curr_guess,
+                              const cv::Rect& box_prev, const PointToPlaneSettings& settings);
+
+}  // namespace slamkit

@@ -1,0 +1,117 @@
+#include "eval/ate.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "eval/association.h"
+
+namespace slamkit::eval {
+namespace {
+
+// A camera moving on a helix while turning: enough 3D structure for every alignment.
+Trajectory helix(size_t n = 200) {
+  Trajectory t;
+  for (size_t k = 0; k < n; ++k) {
+    const double s = 0.05 * double(k);
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = (Eigen::AngleAxisd(0.3 * s, Eigen::Vector3d::UnitZ()) *
+                  Eigen::AngleAxisd(0.1 * std::sin(s), Eigen::Vector3d::UnitX()))
+                     .toRotationMatrix();
+    T.translation() = Eigen::Vector3d(std::cos(s), std::sin(s), 0.1 * s);
+    t.push_back(1000.0 + 0.03 * double(k), T);
+  }
+  return t;
+}
+
+// Every pose mapped by x -> scale * R * x + t (orientation rotated by R).
+Trajectory transformed(const Trajectory& in, const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                       double scale = 1.0) {
+  Trajectory out;
+  for (const StampedPose& p : in.poses()) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = R * p.T_w_c.rotation();
+    T.translation() = scale * R * p.T_w_c.translation() + t;
+    out.push_back(p.stamp, T);
+  }
+  return out;
+}
+
+const Eigen::Matrix3d kR =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+const Eigen::Vector3d kT(0.5, -1.25, 2.0);
+
+AteResult ate_of(const Trajectory& gt, const Trajectory& est, AlignMethod method,
+                 size_t first = 0) {
+  return compute_ate(gt, est, associate(gt, est, {}), {method, first});
+}
+
+TEST(Ate, RigidlyMovedGroundtruthHasZeroErrorAndTheTransformIsRecovered) {
+  const Trajectory gt = helix();
+  // est = T^-1(gt), so aligning est onto gt must find T.
+  const Trajectory est = transformed(gt, kR.transpose(), -kR.transpose() * kT);
+  const AteResult r = ate_of(gt, est, AlignMethod::kSe3);
+  EXPECT_EQ(r.trans.count, gt.size());
+  EXPECT_LT(r.trans.max, 1e-12);
+  EXPECT_LT(r.rot_deg.max, 1e-6);
+  EXPECT_TRUE(r.alignment.rotation.isApprox(kR, 1e-12));
+  EXPECT_TRUE(r.alignment.translation.isApprox(kT, 1e-12));
+  EXPECT_DOUBLE_EQ(r.alignment.scale, 1.0);
+}
+
+TEST(Ate, Sim3RecoversScaleWhereSe3CannotRemoveIt) {
+  const Trajectory gt = helix();
+  const double s = 2.5;  // est = (1/s) R^T (gt - t)
+  const Trajectory est = transformed(gt, kR.transpose(), -kR.transpose() * kT / s, 1.0 / s);
+  const AteResult sim3 = ate_of(gt, est, AlignMethod::kSim3);
+  EXPECT_LT(sim3.trans.max, 1e-12);
+  EXPECT_NEAR(sim3.alignment.scale, s, 1e-12);
+  EXPECT_TRUE(sim3.alignment.rotation.isApprox(kR, 1e-12));
+  EXPECT_TRUE(sim3.alignment.translation.isApprox(kT, 1e-12));
+  EXPECT_GT(ate_of(gt, est, AlignMethod::kSe3).trans.rmse, 0.1);
+}
+
+TEST(Ate, ConstantOffsetWithoutAlignmentIsExactlyThatError) {
+  const Trajectory gt = helix();
+  const Trajectory est = transformed(gt, Eigen::Matrix3d::Identity(), {0.03, -0.04, 0.0});
+  const AteResult none = ate_of(gt, est, AlignMethod::kNone);
+  EXPECT_NEAR(none.trans.min, 0.05, 1e-12);
+  EXPECT_NEAR(none.trans.max, 0.05, 1e-12);
+  EXPECT_NEAR(none.trans.rmse, 0.05, 1e-12);
+  EXPECT_NEAR(none.trans.std, 0.0, 1e-12);
+  EXPECT_NEAR(none.rot_deg.max, 0.0, 1e-6);
+  const AteResult translation = ate_of(gt, est, AlignMethod::kTranslation);
+  EXPECT_LT(translation.trans.max, 1e-12);
+  EXPECT_TRUE(translation.alignment.translation.isApprox(Eigen::Vector3d(-0.03, 0.04, 0), 1e-12));
+}
+
+TEST(Ate, AlignFirstUsesOnlyTheFirstPoses) {
+  const Trajectory gt = helix();
+  const Trajectory est = transformed(gt, kR.transpose(), -kR.transpose() * kT);
+  // Drift after pose 100 must not change an alignment on the first 50 poses.
+  std::vector<StampedPose> drifting = est.poses();
+  for (size_t k = 100; k < drifting.size(); ++k)
+    drifting[k].T_w_c.translation() += Eigen::Vector3d(0.001 * double(k - 100), 0, 0);
+  const AteResult r = ate_of(gt, Trajectory(drifting), AlignMethod::kSe3, 50);
+  EXPECT_EQ(r.alignment.poses_used, 50u);
+  EXPECT_TRUE(r.alignment.rotation.isApprox(kR, 1e-12));
+  EXPECT_LT(r.trans_errors[99], 1e-12);
+  EXPECT_NEAR(r.trans_errors[150], 0.05, 1e-9);  // the drift itself, unrotated by alignment
+
+  const AteResult origin = ate_of(gt, est, AlignMethod::kSe3, 1);  // first poses coincide
+  EXPECT_LT(origin.trans.max, 1e-12);
+  EXPECT_THROW(ate_of(gt, est, AlignMethod::kSe3, 2), std::invalid_argument);
+}
+
+TEST(Ate, ApplyAlignmentMovesTheWholeEstimate) {
+  const Trajectory gt = helix(50);
+  const Trajectory est = transformed(gt, kR.transpose(), -kR.transpose() * kT);
+  const AteResult r = ate_of(gt, est, AlignMethod::kSe3);
+  const Trajectory aligned = apply_alignment(est, r.alignment);
+  ASSERT_EQ(aligned.size(), gt.size());
+  for (size_t k = 0; k < gt.size(); ++k)
+    EXPECT_TRUE(aligned[k].T_w_c.isApprox(gt[k].T_w_c, 1e-12)) << k;
+}
+
+}  // namespace
+}  // namespace slamkit::eval

@@ -1,0 +1,190 @@
+// `slamkit eval` end to end: files in, files and exit codes out.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/test_data.h"
+
+namespace slamkit::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A TUM file with n poses at 30 Hz from `start`, moving on a circle; `shift` moves positions.
+fs::path write_tum(const fs::path& path, size_t n, double start, double shift = 0.0,
+                   const std::string& extra_lines = "") {
+  std::ofstream out(path);
+  out << "# timestamp tx ty tz qx qy qz qw\n";
+  out.precision(17);
+  for (size_t k = 0; k < n; ++k) {
+    const double s = 0.05 * double(k);
+    out << start + double(k) / 30.0 << " " << std::cos(s) + shift << " " << std::sin(s) << " "
+        << 0.1 * s << " 0 0 " << std::sin(s / 2) << " " << std::cos(s / 2) << "\n";
+  }
+  out << extra_lines;
+  return path;
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+TEST(EvalCli, AteThenRpeShareOneMetricsFileAndWriteCsvAndAlignedTrajectory) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 300, 1000.0);
+  const fs::path est = write_tum(dir / "est.txt", 300, 1000.0, 0.02);
+  const fs::path out = dir / "run";
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(est) +
+                                  " --align none --out " + quoted(out) + " --no-plot",
+                              &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("absolute_translational_error.rmse 0.020000 m"), std::string::npos) << log;
+  ASSERT_EQ(test::run_slamkit("eval rpe " + quoted(gt) + " " + quoted(est) + " --json " +
+                                  quoted(out / "metrics.json") + " --quiet",
+                              &log),
+            0)
+      << log;
+  EXPECT_EQ(log, "");  // --quiet prints nothing
+
+  const nlohmann::json m = read_json(out / "metrics.json");
+  EXPECT_EQ(m["ate"]["pairs"], 300);
+  EXPECT_NEAR(m["ate"]["rmse"].get<double>(), 0.02, 1e-12);
+  EXPECT_EQ(m["ate"]["alignment"]["method"], "none");
+  EXPECT_EQ(m["rpe"]["unit"], "s");
+  EXPECT_EQ(m["rpe"]["convention"], "tum");
+  EXPECT_LT(m["rpe"]["trans"]["max"].get<double>(), 1e-9);
+  EXPECT_EQ(m["inputs"]["estimate"]["poses"], 300);
+  EXPECT_EQ(m["inputs"]["groundtruth"]["fnv1a64"].get<std::string>().size(), 16u);
+  EXPECT_EQ(m["settings"]["system_name"], "est");
+  EXPECT_DOUBLE_EQ(m["coverage"]["fraction_of_groundtruth"].get<double>(), 1.0);
+
+  std::ifstream csv(out / "errors.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time,ate_m,est_tx,est_ty,est_tz,gt_tx,gt_ty,gt_tz,rot_deg");
+  EXPECT_TRUE(fs::exists(out / "aligned.txt"));
+  EXPECT_FALSE(fs::exists(out / "rpe.csv"));  // rpe wrote only where --json pointed
+}
+
+TEST(EvalCli, BadInputsGiveOneClearLineAndExitCode2) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  std::string log;
+
+  const fs::path seven = dir / "seven.txt";
+  std::ofstream(seven) << "1000.0 1 2 3 0 0 0\n";
+  EXPECT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(seven), &log), 2);
+  EXPECT_NE(log.find("seven.txt:1: expected 8 fields"), std::string::npos) << log;
+
+  const fs::path empty = dir / "empty.txt";
+  std::ofstream(empty) << "# nothing\n";
+  EXPECT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(empty), &log), 2);
+  EXPECT_NE(log.find("no valid pose"), std::string::npos) << log;
+
+  const fs::path later = write_tum(dir / "later.txt", 100, 5000.0);
+  EXPECT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(later), &log), 2);
+  EXPECT_NE(log.find("only 0 estimated pose(s) matched groundtruth within 0.02 s"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(test::run_slamkit("eval rpe " + quoted(gt) + " " + quoted(later), &log), 2);
+  EXPECT_NE(log.find("RPE found 0 valid pose pair(s)"), std::string::npos) << log;
+}
+
+TEST(EvalCli, SkippedLinesAndPartialCoverageAreReportedAndTheOverlapEvaluated) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 200, 1000.0);
+  // Half the groundtruth span, plus a NaN line and a zero quaternion.
+  const fs::path est = write_tum(dir / "est.txt", 100, 1000.0, 0.0,
+                                 "1004.0 nan 0 0 0 0 0 1\n1004.1 1 2 3 0 0 0 0\n");
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(est), &log), 0) << log;
+  EXPECT_NE(log.find("est.txt:102: non-finite value, line skipped"), std::string::npos) << log;
+  EXPECT_NE(log.find("est.txt:103: zero quaternion, line skipped"), std::string::npos) << log;
+  EXPECT_NE(log.find("estimate covers 50% of groundtruth time span"), std::string::npos) << log;
+  EXPECT_NE(log.find("compared_pose_pairs 100 pairs"), std::string::npos) << log;
+}
+
+TEST(EvalCli, MissingPlotPythonIsAnErrorOnlyWhenPlotsWereRequested) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  const std::string args = "eval ate " + quoted(gt) + " " + quoted(gt);
+  const std::string no_python = "env SLAMKIT_PYTHON=/nonexistent/python3 ";
+  std::string log;
+  // run_slamkit prefixes the binary; put the environment in front through `env`.
+  const std::string binary = SLAMKIT_BINARY;
+  const auto run = [&](const std::string& extra) {
+    const std::string command = no_python + binary + " " + args + " " + extra + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    char buffer[4096];
+    log.clear();
+    while (fgets(buffer, sizeof buffer, pipe)) log += buffer;
+    const int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  EXPECT_EQ(run("--plot " + quoted(dir / "plots")), 1);
+  EXPECT_NE(log.find("no ate plots drawn: no Python interpreter at '/nonexistent/python3'"),
+            std::string::npos)
+      << log;
+  EXPECT_TRUE(fs::exists(dir / "plots" / "metrics.json"));
+  EXPECT_TRUE(fs::exists(dir / "plots" / "errors.csv"));
+  EXPECT_EQ(run("--out " + quoted(dir / "out")), 0);
+  EXPECT_NE(log.find("note: no ate plots drawn"), std::string::npos) << log;
+}
+
+TEST(EvalCli, RealFr2DeskAllWritesReferenceNumbersAndPlotsAndCompareTablesThem) {
+  SLAMKIT_REQUIRE_DATA(gt, "trajectories/fr2_desk/groundtruth.txt");
+  SLAMKIT_REQUIRE_DATA(est, "trajectories/fr2_desk/orbslam.txt");
+  const fs::path dir = test::temp_dir("eval_cli");
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval all " + quoted(gt) + " " + quoted(est) + " --out " +
+                                  quoted(dir / "orbslam") + " --quiet",
+                              &log),
+            0)
+      << log;
+  const nlohmann::json m = read_json(dir / "orbslam" / "metrics.json");
+  EXPECT_EQ(m["ate"]["pairs"], 2223);
+  EXPECT_NEAR(m["ate"]["rmse"].get<double>(), 0.008144, 5e-7);
+  EXPECT_EQ(m["rpe"]["pairs"], 1998);
+  EXPECT_NEAR(m["rpe"]["trans"]["rmse"].get<double>(), 0.007161, 5e-7);
+  EXPECT_EQ(m["inputs"]["groundtruth"]["duplicate_stamps_dropped"], 1);
+  const bool can_plot = std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0;
+  if (can_plot) {
+    for (const char* name : {"ate_over_time", "trajectory_xy", "rpe_over_time"}) {
+      EXPECT_TRUE(fs::exists(dir / "orbslam" / (std::string(name) + ".png"))) << name;
+      EXPECT_TRUE(fs::exists(dir / "orbslam" / (std::string(name) + ".svg"))) << name;
+    }
+  }
+
+  ASSERT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(est) +
+                                  " --align sim3 --system-name 'ORB-SLAM sim3' --no-plot --out " +
+                                  quoted(dir / "sim3") + " --quiet",
+                              &log),
+            0)
+      << log;
+  ASSERT_EQ(test::run_slamkit("eval compare " + quoted(dir / "orbslam") + " " +
+                                  quoted(dir / "sim3") + " --out " + quoted(dir / "cmp"),
+                              &log),
+            0)
+      << log;
+  std::ifstream md(dir / "cmp" / "comparison.md");
+  std::stringstream text;
+  text << md.rdbuf();
+  EXPECT_NE(text.str().find("| orbslam | fr2_desk | 2223 | 0.008144 |"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("| ORB-SLAM sim3 | fr2_desk |"), std::string::npos) << text.str();
+  EXPECT_TRUE(fs::exists(dir / "cmp" / "comparison.csv"));
+  if (can_plot) {
+    EXPECT_TRUE(fs::exists(dir / "cmp" / "ate_comparison.png"));
+  }
+}
+
+}  // namespace
+}  // namespace slamkit::eval

@@ -1,0 +1,125 @@
+#include "eval/rpe.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "eval/association.h"
+
+namespace slamkit::eval {
+namespace {
+
+// Groundtruth at 10 Hz on a curve, turning.
+Trajectory curve(size_t n = 60, double rate = 10.0) {
+  Trajectory t;
+  for (size_t k = 0; k < n; ++k) {
+    const double s = double(k) / rate;
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() =
+        Eigen::AngleAxisd(0.4 * s, Eigen::Vector3d(0.2, 0.3, 1).normalized()).toRotationMatrix();
+    T.translation() = Eigen::Vector3d(s, 0.5 * s * s, 0.1 * s);
+    t.push_back(100.0 + s, T);
+  }
+  return t;
+}
+
+// The estimate composes every groundtruth step with the same extra motion D:
+// P_k = P_{k-1} (Q_{k-1}^-1 Q_k) D.
+Trajectory with_step_error(const Trajectory& gt, const Eigen::Isometry3d& D) {
+  Trajectory est;
+  Eigen::Isometry3d P = gt[0].T_w_c;
+  est.push_back(gt[0].stamp, P);
+  for (size_t k = 1; k < gt.size(); ++k) {
+    P = P * (gt[k - 1].T_w_c.inverse() * gt[k].T_w_c) * D;
+    est.push_back(gt[k].stamp, P);
+  }
+  return est;
+}
+
+RpeResult rpe_of(const Trajectory& gt, const Trajectory& est, RpeOptions o) {
+  return compute_rpe(gt, est, associate(gt, est, {}), o);
+}
+
+TEST(Rpe, KnownPerStepTranslationErrorInBothConventions) {
+  const Trajectory gt = curve();
+  Eigen::Isometry3d D = Eigen::Isometry3d::Identity();
+  D.translation() = Eigen::Vector3d(0.006, -0.008, 0.0);  // |d| = 0.01 m per step
+  const Trajectory est = with_step_error(gt, D);
+
+  RpeOptions o;
+  o.delta = 1;
+  o.unit = DeltaUnit::kFrames;
+  const RpeResult tum = rpe_of(gt, est, o);
+  // i = 0..n-1 with j = i + 1, minus the pairs whose j is the last pose (i = n-2, n-1).
+  EXPECT_EQ(tum.pairs.size(), gt.size() - 2);
+  EXPECT_NEAR(tum.trans.min, 0.01, 1e-12);
+  EXPECT_NEAR(tum.trans.max, 0.01, 1e-12);
+  EXPECT_NEAR(tum.rot_deg.max, 0.0, 1e-5);
+
+  o.convention = RpeConvention::kEvo;
+  const RpeResult evo = rpe_of(gt, est, o);
+  EXPECT_EQ(evo.pairs.size(), gt.size() - 1);  // evo keeps the last pair
+  EXPECT_NEAR(evo.trans.rmse, 0.01, 1e-12);
+}
+
+TEST(Rpe, KnownPerStepRotationErrorOverOneSecond) {
+  const Trajectory gt = curve();
+  Eigen::Isometry3d D = Eigen::Isometry3d::Identity();
+  // About the groundtruth's own turning axis, so the rotations commute and add up exactly.
+  D.linear() = Eigen::AngleAxisd(0.2 * M_PI / 180.0, Eigen::Vector3d(0.2, 0.3, 1).normalized())
+                   .toRotationMatrix();
+  const Trajectory est = with_step_error(gt, D);
+  const RpeResult r = rpe_of(gt, est, RpeOptions{});  // 1 s = 10 steps of 0.2 deg
+  EXPECT_NEAR(r.rot_deg.min, 2.0, 1e-6);
+  EXPECT_NEAR(r.rot_deg.max, 2.0, 1e-6);
+  // Poses 0..59 over 5.9 s: i with t_i + 1 s before the last pose, i.e. i = 0..48.
+  EXPECT_EQ(r.pairs.size(), 49u);
+  EXPECT_DOUBLE_EQ(r.pairs.front().stamp_est_j, gt[10].stamp);
+}
+
+TEST(Rpe, PairsFarFromGroundtruthAreDroppedAndTooFewIsAnError) {
+  const Trajectory gt = curve();
+  // Estimate poses 3 groundtruth intervals away from any groundtruth pose are dropped
+  // (limit: twice the median groundtruth interval).
+  Trajectory est;
+  for (size_t k = 0; k < gt.size(); ++k)
+    est.push_back(gt[k].stamp + (k >= 20 && k < 40 ? 10.0 : 0.0) + (k >= 40 ? 20.0 : 0.0),
+                  gt[k].T_w_c);
+  RpeOptions o;
+  o.unit = DeltaUnit::kFrames;
+  const RpeResult r = rpe_of(gt, est, o);
+  EXPECT_EQ(r.pairs.size(), 19u);  // only i = 0..18 have both poses within groundtruth
+  EXPECT_LT(r.trans.max, 1e-12);
+
+  Trajectory far;
+  for (size_t k = 0; k < 10; ++k) far.push_back(500.0 + k, gt[k].T_w_c);
+  try {
+    rpe_of(gt, far, RpeOptions{});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("RPE found 0 valid pose pair(s)"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Rpe, EvoFramesUsesConsecutiveWindowsUnlessAllPairs) {
+  const Trajectory gt = curve(21);
+  RpeOptions o;
+  o.convention = RpeConvention::kEvo;
+  o.unit = DeltaUnit::kFrames;
+  o.delta = 5;
+  EXPECT_EQ(rpe_of(gt, gt, o).pairs.size(), 4u);  // (0,5) (5,10) (10,15) (15,20)
+  o.all_pairs = true;
+  EXPECT_EQ(rpe_of(gt, gt, o).pairs.size(), 16u);  // (i, i+5) for i = 0..15
+}
+
+TEST(FindClosestIndex, ReproducesTheScriptsBinarySearch) {
+  const std::vector<double> L = {0.0, 1.0, 2.0, 3.0};
+  EXPECT_EQ(find_closest_index(L, 2.0), 2u);
+  EXPECT_EQ(find_closest_index(L, 1.4), 1u);
+  EXPECT_EQ(find_closest_index(L, 1.5), 2u);  // a tie goes to the first element visited
+  EXPECT_EQ(find_closest_index(L, -5.0), 0u);
+  EXPECT_EQ(find_closest_index(L, 99.0), 3u);
+}
+
+}  // namespace
+}  // namespace slamkit::eval

@@ -1,0 +1,192 @@
+#include "tracking/point_to_plane.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/pose.h"
+
+namespace slamkit {
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+// A tiny ray caster: the scene is a list of planes n.x = d and axis-aligned boxes, in the
+// world frame (x right, y down, z forward, like the first camera).
+struct Plane {
+  Eigen::Vector3d n;
+  double d;
+};
+struct Box {
+  Eigen::Vector3d lo, hi;
+};
+struct Scene {
+  std::vector<Plane> planes;
+  std::vector<Box> boxes;
+};
+
+double hit_box(const Box& b, const Eigen::Vector3d& o, const Eigen::Vector3d& dir) {
+  double t_near = 0, t_far = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const double t1 = (b.lo[a] - o[a]) / dir[a], t2 = (b.hi[a] - o[a]) / dir[a];
+    t_near = std::max(t_near, std::min(t1, t2));
+    t_far = std::min(t_far, std::max(t1, t2));
+  }
+  return t_near <= t_far && t_near > 0 ? t_near : std::numeric_limits<double>::infinity();
+}
+
+// Depth (metres, CV_32F) seen from camera pose T_w_c; 0 where nothing is hit within 8 m.
+cv::Mat render(const Scene& scene, const Camera& cam, const Eigen::Isometry3d& T_w_c) {
+  cv::Mat depth(cam.height, cam.width, CV_32F, cv::Scalar(0));
+  const Eigen::Vector3d o = T_w_c.translation();
+  for (int v = 0; v < cam.height; ++v) {
+    for (int u = 0; u < cam.width; ++u) {
+      // Camera-frame ray with z = 1, so the ray parameter is the depth.
+      const Eigen::Vector3d dir = T_w_c.linear() * cam.back_project(Eigen::Vector2d(u, v), 1);
+      double t = std::numeric_limits<double>::infinity();
+      for (const Plane& p : scene.planes) {
+        const double s = (p.d - p.n.dot(o)) / p.n.dot(dir);
+        if (s > 0) t = std::min(t, s);
+      }
+      for (const Box& b : scene.boxes) t = std::min(t, hit_box(b, o, dir));
+      if (t < 8) depth.at<float>(v, u) = static_cast<float>(t);
+    }
+  }
+  return depth;
+}
+
+// A room corner (floor, back wall, left wall) with a box on the floor.
+Scene corner_scene() {
+  Scene s;
+  s.planes = {{Eigen::Vector3d(0, 1, 0), 0.8},
+              {Eigen::Vector3d(0, 0, 1), 3.0},
+              {Eigen::Vector3d(1, 0, 0), -1.2}};
+  s.boxes = {{Eigen::Vector3d(0.2, 0.3, 1.8), Eigen::Vector3d(0.7, 0.8, 2.3)}};
+  return s;
+}
+
+Eigen::Isometry3d pose(const Eigen::Vector3d& axis, double angle_deg, const Eigen::Vector3d& t) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(angle_deg * kDeg, axis.normalized()).matrix();
+  T.translation() = t;
+  return T;
+}
+
+struct Views {
+  Camera cam = Camera::freiburg3();
+  Eigen::Isometry3d T_prev_curr;
+  cv::Mat prev, curr;
+};
+
+Views corner_views() {
+  Views views;
+  const Eigen::Isometry3d T_w_prev = pose({0, 1, 0}, -8, {0.1, -0.05, 0.0});
+  views.T_prev_curr = pose({0.2, 1, -0.3}, 2.0, {0.03, -0.02, 0.04});
+  views.prev = render(corner_scene(), views.cam, T_w_prev);
+  views.curr = render(corner_scene(), views.cam, T_w_prev * views.T_prev_curr);
+  return views;
+}
+
+double translation_error(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return (a.translation() - b.translation()).norm();
+}
+double rotation_error_deg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return rotation_angle(a.inverse() * b) / kDeg;
+}
+
+TEST(PointToPlane, RecoversRelativeMotionFromIdentityGuess) {
+  const Views v = corner_views();
+  const PointToPlaneSettings settings;
+  EXPECT_EQ(settings.pyramid_levels, 2);
+  EXPECT_EQ(settings.iterations_per_level, 3);
+  // The guess is off by the whole motion: 5.4 cm and 2 degrees.
+  const DenseAlignment a =
+      point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+  EXPECT_EQ(a.status, DenseAlignStatus::kConverged);
+  EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005);
+  EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3);
+  EXPECT_GT(a.num_correspondences, 100000);
+  EXPECT_GT(a.min_eigenvalue, settings.min_eigenvalue);
+  EXPECT_LT(a.rmse, 0.002);
+  EXPECT_LE(a.iterations, 6);
+}
+
+TEST(PointToPlane, RecoversFromAPerturbedGuess) {
+  const Views v = corner_views();
+  const Eigen::Isometry3d guess = v.T_prev_curr * pose({1, 0.5, 0.2}, 3.0, {-0.03, 0.02, 0.03});
+  const DenseAlignment a =
+      point_to_plane(v.prev, v.curr, v.cam, guess, cv::Rect(), PointToPlaneSettings{});
+  EXPECT_EQ(a.status, DenseAlignStatus::kConverged);
+  EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005);
+  EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3);
+}
+
+TEST(PointToPlane, OneAndTwoPyramidLevelsBothConverge) {
+  const Views v = corner_views();
+  for (int levels : {1, 2}) {
+    PointToPlaneSettings settings;
+    settings.pyramid_levels = levels;
+    const DenseAlignment a =
+        point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+    EXPECT_EQ(a.status, DenseAlignStatus::kConverged) << levels << " levels";
+    EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005) << levels << " levels";
+    EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3) << levels << " levels";
+  }
+}
+
+TEST(PointToPlane, CoVisibleBoxRestrictsThePreviousPixels) {
+  const Views v = corner_views();
+  // The left half: left wall, floor, back wall and the box's edge are all in it.
+  const cv::Rect box(0, 0, 320, 480);
+  const DenseAlignment boxed = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                              box, PointToPlaneSettings{});
+  const DenseAlignment whole = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                              cv::Rect(), PointToPlaneSettings{});
+  EXPECT_EQ(boxed.status, DenseAlignStatus::kConverged);
+  EXPECT_LT(boxed.num_correspondences, 0.6 * whole.num_correspondences);
+  EXPECT_LT(translation_error(boxed.T_prev_curr, v.T_prev_curr), 0.005);
+}
+
+TEST(PointToPlane, SinglePlaneIsIllConditioned) {
+  Scene wall;
+  wall.planes = {{Eigen::Vector3d(0, 0, 1), 2.0}};
+  const Camera cam = Camera::freiburg3();
+  const Eigen::Isometry3d T_prev_curr = pose({0, 1, 0}, 1.0, {0.02, 0, 0.01});
+  const cv::Mat prev = render(wall, cam, Eigen::Isometry3d::Identity());
+  const cv::Mat curr = render(wall, cam, T_prev_curr);
+  const DenseAlignment a = point_to_plane(prev, curr, cam, Eigen::Isometry3d::Identity(),
+                                          cv::Rect(), PointToPlaneSettings{});
+  EXPECT_EQ(a.status, DenseAlignStatus::kIllConditioned);
+  EXPECT_FALSE(a.ok());
+  EXPECT_LT(a.min_eigenvalue, 1e-6);
+}
+
+TEST(PointToPlane, NoDepthMeansTooFewCorrespondences) {
+  const Camera cam = Camera::freiburg3();
+  const cv::Mat empty(cam.height, cam.width, CV_32F, cv::Scalar(0));
+  const DenseAlignment a = point_to_plane(empty, empty, cam, Eigen::Isometry3d::Identity(),
+                                          cv::Rect(), PointToPlaneSettings{});
+  EXPECT_EQ(a.status, DenseAlignStatus::kTooFewCorrespondences);
+  EXPECT_EQ(a.num_correspondences, 0);
+}
+
+TEST(PointToPlane, SameResultWhateverTheThreadCount) {
+  const Views v = corner_views();
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const DenseAlignment one = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                            cv::Rect(), PointToPlaneSettings{});
+  omp_set_num_threads(3);
+  const DenseAlignment three = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                              cv::Rect(), PointToPlaneSettings{});
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.T_prev_curr.matrix(), three.T_prev_curr.matrix());  // bit for bit
+  EXPECT_EQ(one.min_eigenvalue, three.min_eigenvalue);
+  EXPECT_EQ(one.num_correspondences, three.num_correspondences);
+}
+
+}  // namespace
+}  // namespace slamkit
