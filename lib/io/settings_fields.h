@@ -64,6 +64,8 @@ void visit_fields(PointToPlaneSettings& s, V& v) {
   v.field("convergence_translation", s.convergence_translation);
   v.field("min_correspondences", s.min_correspondences);
   v.field("min_eigenvalue", s.min_eigenvalue);
+  v.field("normal_smoothing_diameter", s.normal_smoothing_diameter);
+  v.field("normal_smoothing_sigma_depth", s.normal_smoothing_sigma_depth);
 }
 
 template <class V>
@@ -92,6 +94,7 @@ void visit_fields(TrackingSettings& s, V& v) {
   v.field("local_map_keyframes", s.local_map_keyframes);
   v.field("lost_search_radius_factor", s.lost_search_radius_factor);
   v.field("min_matches_for_box", s.min_matches_for_box);
+  v.field("relocalisation_candidates", s.relocalisation_candidates);
   v.section("ransac", s.ransac);
   v.section("point_to_plane", s.point_to_plane);
   v.section("motion_ba", s.motion_ba);

@@ -5,6 +5,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "keyframes/window_code.h"
+
 namespace slamkit {
 
 struct Keyframe {
@@ -17,6 +19,7 @@ struct Keyframe {
   std::vector<float> depths;                 // metres at each keypoint, 0 = none
   cv::Mat descriptors;                       // N x 32 CV_8U
   std::vector<int> point_ids;                // per keypoint: map point index, -1 = none
+  WindowCode window_code;                    // for finding similar views when lost
 };
 
 }  // namespace slamkit

@@ -1,5 +1,7 @@
 #include "tracking/point_to_plane.h"
 
+#include <opencv2/imgproc.hpp>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -24,7 +26,8 @@ struct Surface {
   int index(int u, int v) const { return v * width + u; }
 };
 
-Surface make_surface(const cv::Mat& depth, const Camera& cam, double max_depth_ratio) {
+Surface make_surface(const cv::Mat& depth, const Camera& cam,
+                     const PointToPlaneSettings& settings) {
   Surface s;
   s.width = depth.cols, s.height = depth.rows;
   const Eigen::Vector3f none = Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());
@@ -41,14 +44,37 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam, double max_depth_r
             Eigen::Vector3d((u - cam.cx) / cam.fx * z, y * z, z).cast<float>();
     }
   }
+  // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does: neighbour
+  // differences of raw Kinect depth are mostly noise beyond a metre, and the alignment then
+  // never settles. The residual itself still uses the measured points.
+  std::vector<Eigen::Vector3f> smoothed_points;
+  if (settings.normal_smoothing_diameter > 0) {
+    cv::Mat smoothed;
+    cv::bilateralFilter(depth, smoothed, settings.normal_smoothing_diameter,
+                        settings.normal_smoothing_sigma_depth,
+                        settings.normal_smoothing_diameter / 2.0);
+    smoothed_points = s.points;
+    for (int v = 0; v < s.height; ++v) {
+      const float* row = smoothed.ptr<float>(v);
+      for (int u = 0; u < s.width; ++u)
+        if (!std::isnan(s.points[s.index(u, v)].z()))
+          smoothed_points[s.index(u, v)] =
+              Eigen::Vector3d((u - cam.cx) / cam.fx * row[u], (v - cam.cy) / cam.fy * row[u],
+                              row[u])
+                  .cast<float>();
+    }
+  }
+  const std::vector<Eigen::Vector3f>& normal_source =
+      smoothed_points.empty() ? s.points : smoothed_points;
   // SPEC: N = (q(u+1,v) - q(u,v)) x (q(u,v+1) - q(u,v)), normalised. Neighbours across a
   // depth edge would give the normal of a surface that is not there.
+  const double max_depth_ratio = settings.max_neighbour_depth_ratio;
 #pragma omp parallel for schedule(static)
   for (int v = 0; v < s.height - 1; ++v) {
     for (int u = 0; u + 1 < s.width; ++u) {
-      const Eigen::Vector3f& q = s.points[s.index(u, v)];
-      const Eigen::Vector3f& qu = s.points[s.index(u + 1, v)];
-      const Eigen::Vector3f& qv = s.points[s.index(u, v + 1)];
+      const Eigen::Vector3f& q = normal_source[s.index(u, v)];
+      const Eigen::Vector3f& qu = normal_source[s.index(u + 1, v)];
+      const Eigen::Vector3f& qv = normal_source[s.index(u, v + 1)];
       if (std::isnan(q.z()) || std::isnan(qu.z()) || std::isnan(qv.z())) continue;
       const float max_step = static_cast<float>(max_depth_ratio) * q.z();
       if (std::abs(qu.z() - q.z()) > max_step || std::abs(qv.z() - q.z()) > max_step) continue;
@@ -195,8 +221,8 @@ DenseAlignment point_to_plane(const cv::Mat& depth_prev, const cv::Mat& depth_cu
   bool converged = false;
   for (int level = settings.pyramid_levels - 1; level >= 0; --level) {
     const Camera cam = camera_at_level(camera, level);
-    const Surface prev = make_surface(prev_pyramid[level], cam, settings.max_neighbour_depth_ratio);
-    const Surface curr = make_surface(curr_pyramid[level], cam, settings.max_neighbour_depth_ratio);
+    const Surface prev = make_surface(prev_pyramid[level], cam, settings);
+    const Surface curr = make_surface(curr_pyramid[level], cam, settings);
     const cv::Rect level_box = box_at_level(box, level) & cv::Rect(0, 0, prev.width, prev.height);
     converged = false;
     for (int it = 0; it < settings.iterations_per_level && !converged; ++it) {
@@ -218,6 +244,7 @@ DenseAlignment point_to_plane(const cv::Mat& depth_prev, const cv::Mat& depth_cu
   }
   // Judged on the finest level's last iteration: earlier ones may lack pairs that the
   // guess was too far off to associate.
+  result.converged = converged;
   if (result.min_eigenvalue < settings.min_eigenvalue)
     result.status = DenseAlignStatus::kIllConditioned;
   else

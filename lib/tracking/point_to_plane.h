@@ -24,6 +24,9 @@ struct DenseAlignment {
   double min_eigenvalue = 0;    // conditioning of the last normal matrix (see settings)
   double rmse = 0;              // point-to-plane residual of the last iteration, metres
   int iterations = 0;           // Gauss-Newton steps over all levels
+  // The last increment was below the thresholds. With kIllConditioned the free directions
+  // kept the guess and the constrained ones converged: a usable, partly predicted pose.
+  bool converged = false;
   bool ok() const { return status == DenseAlignStatus::kConverged; }
 };
 

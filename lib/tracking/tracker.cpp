@@ -56,7 +56,9 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
   } else {
     Stopwatch watch;
     const Eigen::Isometry3d guess = predict_pose(frame.stamp);
-    std::vector<Match> matches = match_local_map(frame, guess);
+    // After a failure the prediction cannot be trusted: match without it.
+    std::vector<Match> matches =
+        previous_lost_ ? match_for_relocalisation(frame) : match_local_map(frame, guess);
     record.matches = int(matches.size());
     record.match_ms = watch.lap();
 
@@ -65,15 +67,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     if (estimate.ok) refine_pose(frame, estimate, record);
     record.refine_ms = watch.lap();
 
-    if (estimate.ok) {
-      const MotionCheck check = check_tracking(poses_.back().T_w_c, estimate.T_w_c,
-                                               frame.stamp - poses_.back().stamp,
-                                               estimate.support, settings_.tracking.failure);
-      if (!check.ok())
-        estimate.failure = check.failure == TrackingFailure::kTooFewInliers ? "too few inliers"
-                                                                            : "implausible jump";
-      estimate.ok = check.ok();
-    }
+    if (estimate.ok) estimate.ok = accept(frame, estimate, record.solver);
     if (!estimate.ok) {
       record.lost = true;
       record.failure = estimate.failure;
@@ -87,12 +81,15 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
   }
   poses_.push_back({frame.stamp, record.T_w_c});
   previous_depth_ = frame.depth;
+  velocity_known_ = !record.lost && !previous_lost_;
   previous_lost_ = record.lost;
   return record;
 }
 
 Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
-  if (poses_.size() < 2) return poses_.back().T_w_c;
+  // The velocity is only known between two frames that were both tracked: a lost frame's
+  // pose is the model's own guess, and a re-acquired one jumps by the correction.
+  if (poses_.size() < 2 || !velocity_known_) return poses_.back().T_w_c;
   return predict_constant_velocity(poses_[poses_.size() - 2], poses_.back(), stamp);
 }
 
@@ -118,11 +115,10 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
   if (int(matches.size()) >= settings_.tracking.min_pairs_for_svd) return matches;
 
   // Too few for the closed form: add descriptor matches against the latest keyframe, which
-  // need no pose prior (this is what re-acquires after a fast motion). Keypoints already
-  // matched by projection keep their match.
+  // need no pose prior. Keypoints already matched by projection keep their match.
   std::vector<bool> taken(frame.features.size(), false);
   for (const Match& m : matches) taken[size_t(m.keypoint)] = true;
-  for (const Match& m : match_reference_keyframe(frame))
+  for (const Match& m : match_keyframe(frame, map_.keyframes().back()))
     if (!taken[size_t(m.keypoint)]) {
       taken[size_t(m.keypoint)] = true;
       matches.push_back(m);
@@ -130,16 +126,53 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
   return matches;
 }
 
-std::vector<Tracker::Match> Tracker::match_reference_keyframe(const PreparedFrame& frame) const {
-  const Keyframe& reference = map_.keyframes().back();
+std::vector<Tracker::Match> Tracker::match_keyframe(const PreparedFrame& frame,
+                                                    const Keyframe& keyframe) const {
   std::vector<Match> matches;
-  if (frame.features.descriptors.empty() || reference.descriptors.empty()) return matches;
+  if (frame.features.descriptors.empty() || keyframe.descriptors.empty()) return matches;
   for (const cv::DMatch& m :
-       match_descriptors(frame.features.descriptors, reference.descriptors, settings_.matcher)) {
-    const int id = reference.point_ids[size_t(m.trainIdx)];
+       match_descriptors(frame.features.descriptors, keyframe.descriptors, settings_.matcher)) {
+    const int id = keyframe.point_ids[size_t(m.trainIdx)];
     if (id >= 0) matches.push_back({id, m.queryIdx});
   }
   return matches;
+}
+
+std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFrame& frame) const {
+  // Candidates: the latest keyframe and the ones whose window code is most like the frame's.
+  const auto& keyframes = map_.keyframes();
+  std::vector<std::pair<double, size_t>> ranked;
+  for (size_t k = 0; k + 1 < keyframes.size(); ++k)
+    ranked.push_back({-window_similarity(frame.window_code, keyframes[k].window_code), k});
+  const size_t count = std::min(ranked.size(), size_t(settings_.tracking.relocalisation_candidates));
+  std::partial_sort(ranked.begin(), ranked.begin() + long(count), ranked.end());
+  std::vector<size_t> candidates = {keyframes.size() - 1};
+  for (size_t i = 0; i < count; ++i) candidates.push_back(ranked[i].second);
+
+  std::vector<Match> best;
+  for (size_t k : candidates) {
+    std::vector<Match> matches = match_keyframe(frame, keyframes[k]);
+    if (matches.size() > best.size()) best = std::move(matches);
+  }
+  return best;
+}
+
+bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate,
+                     PoseSolver solver) const {
+  // Re-acquired against the map after a failure: the map vouches for the pose, and its jump
+  // from the (motion model) pose before says nothing.
+  if (previous_lost_ && solver == PoseSolver::kSvdRansac) {
+    if (estimate.support >= settings_.tracking.min_pairs_for_svd) return true;
+    estimate.failure = "not re-acquired: too few inliers";
+    return false;
+  }
+  const MotionCheck check =
+      check_tracking(poses_.back().T_w_c, estimate.T_w_c, frame.stamp - poses_.back().stamp,
+                     estimate.support, settings_.tracking.failure);
+  if (!check.ok())
+    estimate.failure =
+        check.failure == TrackingFailure::kTooFewInliers ? "too few inliers" : "implausible jump";
+  return check.ok();
 }
 
 Tracker::PoseEstimate Tracker::estimate_pose(const PreparedFrame& frame,
@@ -215,10 +248,11 @@ Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
   estimate.T_w_c = T_w_prev * dense.T_prev_curr;
   estimate.inliers = matches;  // unchecked: the motion-only BA sorts them
   estimate.support = dense.num_correspondences;
-  estimate.ok = dense.ok();
+  // Ill-conditioned but converged is accepted: the solver kept the prediction only in the
+  // directions the geometry leaves free, which beats replacing the whole pose by the model.
+  estimate.ok = dense.converged && dense.status != DenseAlignStatus::kTooFewCorrespondences;
   if (!estimate.ok)
-    estimate.failure = dense.status == DenseAlignStatus::kIllConditioned ? "dense: ill-conditioned"
-                       : dense.status == DenseAlignStatus::kTooFewCorrespondences
+    estimate.failure = dense.status == DenseAlignStatus::kTooFewCorrespondences
                            ? "dense: too few correspondences"
                            : "dense: not converged";
   return estimate;
@@ -288,6 +322,7 @@ void Tracker::insert_keyframe(const PreparedFrame& frame, const Eigen::Isometry3
   keyframe.depths = frame.keypoint_depths;
   keyframe.descriptors = frame.features.descriptors;
   keyframe.point_ids.assign(frame.features.size(), -1);
+  keyframe.window_code = frame.window_code;
   for (const Match& m : inliers) keyframe.point_ids[size_t(m.keypoint)] = m.point_id;
   map_.insert_keyframe(std::move(keyframe), camera_);
   // Codes older than the new keyframe's neighbours are never compared again.

@@ -39,7 +39,9 @@ class Tracker {
   Eigen::Isometry3d predict_pose(double stamp) const;
   std::vector<Match> match_local_map(const PreparedFrame& frame,
                                      const Eigen::Isometry3d& T_w_c_guess) const;
-  std::vector<Match> match_reference_keyframe(const PreparedFrame& frame) const;
+  std::vector<Match> match_keyframe(const PreparedFrame& frame, const Keyframe& keyframe) const;
+  std::vector<Match> match_for_relocalisation(const PreparedFrame& frame) const;
+  bool accept(const PreparedFrame& frame, PoseEstimate& estimate, PoseSolver solver) const;
   PoseEstimate estimate_pose(const PreparedFrame& frame, const std::vector<Match>& matches,
                              const Eigen::Isometry3d& T_w_c_guess, TrackedFrame& record) const;
   PoseEstimate align_svd_ransac(const PreparedFrame& frame, const std::vector<Match>& matches,
@@ -62,6 +64,7 @@ class Tracker {
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment
   bool previous_lost_ = false;
+  bool velocity_known_ = false;  // the last two frames were tracked, not lost or re-acquired
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras
 };
 

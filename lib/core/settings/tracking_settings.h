@@ -45,6 +45,11 @@ struct PointToPlaneSettings {
   // the RMS point distance (dimensionless, 0..1). A view of a single plane leaves 3
   // directions unconstrained and scores ~0; a room corner scores ~0.01-0.1 (ours).
   double min_eigenvalue = 1e-3;
+  // (beyond) Normals are computed on depth smoothed by a bilateral filter of this diameter
+  // (pixels) and depth sigma (metres), as KinectFusion does; 0 = the paper's raw neighbour
+  // differences. Kinect noise (~2 mm at 1 m) otherwise dominates single-pixel differences.
+  int normal_smoothing_diameter = 7;
+  double normal_smoothing_sigma_depth = 0.03;
 };
 
 // Motion-only bundle adjustment of the current pose (ORB-SLAM2's PoseOptimization).
@@ -79,7 +84,11 @@ struct TrackingSettings {
   double lost_search_radius_factor = 4;
   // (ours) Dense alignment's co-visible box comes from the matched points when there are at
   // least this many; with fewer the whole image is used.
-  int min_matches_for_box = 10;
+  int min_matches_for_box = 30;
+  // (ours) After a lost frame, the frame is matched by descriptor against the latest
+  // keyframe and this many others most similar by window code (the paper's encoding used
+  // for place recognition), and the best is taken: no pose prior is needed.
+  int relocalisation_candidates = 3;
   RansacSettings ransac;
   PointToPlaneSettings point_to_plane;
   MotionBaSettings motion_ba;
