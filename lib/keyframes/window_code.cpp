@@ -30,10 +30,10 @@ uint8_t WindowPattern::choice(int level, int wx, int wy) const {
 
 WindowCode encode_windows(const cv::Mat& bgr, const WindowPattern& pattern, double tau) {
   if (bgr.type() != CV_8UC3) throw std::invalid_argument("encode_windows: expects 8-bit BGR");
-  // Equivalent grey I_e = (R + G + B) / 3, as the paper defines it (not the luma weights).
-  cv::Mat bgr_float, grey;
-  bgr.convertTo(bgr_float, CV_32FC3);
-  cv::transform(bgr_float, grey, cv::Matx13f(1.f / 3, 1.f / 3, 1.f / 3));
+  // Equivalent grey I_e = (R + G + B) / 3, as the paper defines it (not the luma weights),
+  // rounded to 8 bits like any grey image: 8-bit resizing is several times faster than float.
+  cv::Mat grey;
+  cv::transform(bgr, grey, cv::Matx13f(1.f / 3, 1.f / 3, 1.f / 3));
   if (tau < 0) tau = cv::mean(grey)[0];
 
   WindowCode code;
@@ -45,7 +45,7 @@ WindowCode encode_windows(const cv::Mat& bgr, const WindowPattern& pattern, doub
     if (level > 0) cv::resize(grey, level_image, pattern.level_size(level), 0, 0, cv::INTER_AREA);
     const int windows_x = level_image.cols / 2, windows_y = level_image.rows / 2;
     for (int wy = 0; wy < windows_y; ++wy) {
-      const float* rows[2] = {level_image.ptr<float>(2 * wy), level_image.ptr<float>(2 * wy + 1)};
+      const uchar* rows[2] = {level_image.ptr<uchar>(2 * wy), level_image.ptr<uchar>(2 * wy + 1)};
       for (int wx = 0; wx < windows_x; ++wx, ++bit) {
         const uint8_t c = pattern.choice(level, wx, wy);
         if (rows[c >> 1][2 * wx + (c & 1)] >= tau) code.words[bit >> 6] |= uint64_t(1) << (bit & 63);

@@ -1,0 +1,148 @@
+#include "datasets/synth/sequence_writer.h"
+
+#include <omp.h>
+
+#include <atomic>
+#include <cinttypes>
+#include <cstdio>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.h"
+#include "core/trajectory.h"
+#include "datasets/synth/renderer.h"
+#include "io/camera_yaml.h"
+#include "io/trajectory_io.h"
+
+namespace fs = std::filesystem;
+
+namespace slamkit::synth {
+namespace {
+
+constexpr int64_t kFirstStampMicroseconds = 1600000000LL * 1000000LL;
+
+int64_t stamp_microseconds(int i) {
+  return kFirstStampMicroseconds + std::llround(i * 1e6 / kFrameRate);
+}
+
+std::string describe(const SequenceSpec& spec) {
+  return "slamkit synth --preset " + preset_name(spec.preset) + " --frames " +
+         std::to_string(spec.frames) + " --seed " + std::to_string(spec.seed);
+}
+
+void create_folder(const fs::path& folder) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder))
+    throw_input_error(folder.string(),
+                      "cannot create output folder: " + (error ? error.message() : "not a folder"));
+}
+
+std::ofstream open_for_writing(const fs::path& path) {
+  std::ofstream out(path);
+  if (!out) throw_input_error(path.string(), "cannot write file");
+  return out;
+}
+
+void close_written(std::ofstream& out, const fs::path& path) {
+  if (!out.flush()) throw_input_error(path.string(), "write failed");
+}
+
+void write_lists(const SequenceSpec& spec) {
+  const fs::path rgb_path = spec.out / "rgb.txt", depth_path = spec.out / "depth.txt";
+  const fs::path assoc_path = spec.out / "associate.txt";
+  std::ofstream rgb = open_for_writing(rgb_path), depth = open_for_writing(depth_path);
+  std::ofstream assoc = open_for_writing(assoc_path);
+  rgb << "# color images\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  depth << "# depth maps\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  for (int i = 0; i < spec.frames; ++i) {
+    // Depth shares the colour stamp: the images are rendered from the same pose.
+    const std::string stamp = frame_stamp_text(i);
+    rgb << stamp << " rgb/" << stamp << ".png\n";
+    depth << stamp << " depth/" << stamp << ".png\n";
+    assoc << stamp << " rgb/" << stamp << ".png " << stamp << " depth/" << stamp << ".png\n";
+  }
+  close_written(rgb, rgb_path);
+  close_written(depth, depth_path);
+  close_written(assoc, assoc_path);
+}
+
+}  // namespace
+
+Camera synthetic_camera() {
+  Camera camera;
+  camera.name = "slamkit_synth";
+  camera.fx = camera.fy = 525.0;
+  camera.cx = 319.5;
+  camera.cy = 239.5;
+  camera.width = 640;
+  camera.height = 480;
+  camera.depth_scale = 5000.0;
+  return camera;
+}
+
+std::string frame_stamp_text(int i) {
+  const int64_t us = stamp_microseconds(i);
+  char text[32];
+  std::snprintf(text, sizeof text, "%" PRId64 ".%06" PRId64, us / 1000000, us % 1000000);
+  return text;
+}
+
+// Integer microseconds divided once: the correctly rounded quotient is the double nearest to
+// the decimal text, which is what strtod gives when the lists are read back.
+double frame_stamp(int i) { return double(stamp_microseconds(i)) / 1e6; }
+
+void check_spec(const SequenceSpec& spec) {
+  if (spec.frames < 2)
+    throw InputError("--frames: need at least 2 frames, got " + std::to_string(spec.frames));
+  if (spec.threads < 0)
+    throw InputError("--threads: must be 0 (default) or positive, got " +
+                     std::to_string(spec.threads));
+}
+
+void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
+                    const std::function<void(size_t)>& on_progress) {
+  check_spec(spec);
+  const std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
+  create_folder(spec.out / "rgb");
+  create_folder(spec.out / "depth");
+  const Camera camera = synthetic_camera();
+
+  // Fast PNG compression: at the default level writing costs more than rendering. Sensor
+  // noise leaves deflate few long matches to find: run-length matching is faster and, on
+  // these images, smaller too. (The strategy must follow the level, which resets it.)
+  const std::vector<int> png = {cv::IMWRITE_PNG_COMPRESSION, 1, cv::IMWRITE_PNG_STRATEGY,
+                                cv::IMWRITE_PNG_STRATEGY_RLE};
+  std::atomic<size_t> done{0};
+  std::string failed;  // the first file that could not be written
+  const int threads = spec.threads > 0 ? spec.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int i = 0; i < spec.frames; ++i) {
+    const RenderedFrame frame = render_frame(scene, camera, poses[i], spec.sensor, spec.seed, i);
+    const std::string name = frame_stamp_text(i) + ".png";
+    const fs::path rgb = spec.out / "rgb" / name, depth = spec.out / "depth" / name;
+    bool ok_rgb = false, ok_depth = false;
+    try {  // exceptions must not escape an OpenMP region
+      ok_rgb = cv::imwrite(rgb.string(), frame.bgr, png);
+      ok_depth = ok_rgb && cv::imwrite(depth.string(), frame.depth, png);
+    } catch (const cv::Exception&) {
+    }
+    if (!ok_rgb || !ok_depth) {
+#pragma omp critical(synth_failed)
+      if (failed.empty()) failed = (ok_rgb ? depth : rgb).string();
+    }
+    ++done;
+    if (on_progress && omp_get_thread_num() == 0) on_progress(done);
+  }
+  if (!failed.empty()) throw_input_error(failed, "cannot write image");
+  if (on_progress) on_progress(done);
+
+  write_lists(spec);
+  Trajectory groundtruth;
+  for (int i = 0; i < spec.frames; ++i) groundtruth.push_back(frame_stamp(i), poses[i]);
+  write_tum_trajectory(spec.out / "groundtruth.txt", groundtruth,
+                       "ground truth trajectory (exact, T_w_c)\n# file: '" + describe(spec) + "'");
+  write_camera_yaml(spec.out / "calibration.yaml", camera);
+}
+
+}  // namespace slamkit::synth

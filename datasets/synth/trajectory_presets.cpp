@@ -1,0 +1,164 @@
+#include "datasets/synth/trajectory_presets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "datasets/synth/hand_shake.h"
+#include "datasets/synth/room_layout.h"
+
+namespace slamkit::synth {
+namespace {
+
+using Eigen::Vector3d;
+
+constexpr double kDeg = M_PI / 180.0;
+// Hand shake amplitudes (RMS): a few millimetres and a fraction of a degree.
+constexpr double kShakeTranslation = 0.003, kShakeRotation = 0.35 * kDeg;
+
+double wave(double t, double period_s, double phase = 0) {
+  return std::sin(2 * M_PI * t / period_s + phase);
+}
+
+// 0 -> 1 with zero first and second derivatives at both ends.
+double smootherstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * x * (x * (6 * x - 15) + 10);
+}
+
+struct View {
+  Vector3d eye, target;
+};
+
+Eigen::Isometry3d pose_of(const View& view) { return look_at(view.eye, view.target); }
+
+// Hand-held sweeps on an arc south of the desk, about a metre away, looking at a point
+// wandering over it: about 0.4 m/s and 30 deg/s on average, like TUM fr1/desk.
+View desk_view(double t) {
+  const double azimuth = 0.9 * wave(t, 14, 0.3) + 0.3 * wave(t, 5.3, 1.0);
+  const double radius = 1.05 + 0.1 * wave(t, 7.7);
+  const Vector3d eye(radius * std::sin(azimuth), -radius * std::cos(azimuth),
+                     1.3 + 0.12 * wave(t, 9.1));
+  return {eye, kDeskTopCentre + Vector3d(0.45 * wave(t, 3.9), 0.3 * wave(t, 5.7, 0.5),
+                                         0.05 + 0.1 * wave(t, 4.3))};
+}
+
+// An ellipse around the desk, looking inwards; periodic in `phase` (0..1).
+View loop_view(double phase) {
+  const double a = 2 * M_PI * phase;
+  const Vector3d eye(1.85 * std::cos(a), 1.35 * std::sin(a), 1.5 + 0.1 * std::sin(2 * a));
+  return {eye, kDeskTopCentre + Vector3d(0.25 * std::sin(2 * a), 0.2 * std::sin(3 * a), 0.1)};
+}
+
+// Keyframes (phase, eye, target), eased between (position lerped, orientation slerped, so
+// turns are even): desk, then close to the plain corner for 40% of the sequence drifting
+// slowly (so tracking has motion to follow on depth alone), then the sideboard.
+Eigen::Isometry3d low_texture_pose(double phase) {
+  struct Key {
+    double phase;
+    Vector3d eye, target;
+  };
+  static const Key kKeys[] = {
+      {0.00, {-0.2, -1.4, 1.45}, {0.2, 0.1, 0.75}},
+      {0.20, {-0.8, -1.0, 1.35}, {-0.3, 0.2, 0.8}},
+      {0.32, {-1.35, 0.65, 1.15}, kPlainCorner + Vector3d(0, 0.15, 0.2)},
+      {0.52, {-1.45, 0.45, 1.1}, kPlainCorner + Vector3d(0, 0.05, 0.15)},
+      {0.72, {-1.4, 0.7, 1.2}, kPlainCorner + Vector3d(0, 0.2, 0.25)},
+      {0.84, {-0.9, 0.9, 1.4}, {0.3, 1.8, 0.9}},
+      {1.00, {-0.3, 0.8, 1.45}, {0.8, 1.9, 1.0}},
+  };
+  const Key* next = std::upper_bound(std::begin(kKeys), std::end(kKeys), phase,
+                                     [](double p, const Key& k) { return p < k.phase; });
+  if (next == std::end(kKeys)) --next;
+  const Key& prev = *(next - 1);
+  const double w = smootherstep((phase - prev.phase) / (next->phase - prev.phase));
+  const Eigen::Quaterniond q0(look_at(prev.eye, prev.target).linear());
+  const Eigen::Quaterniond q1(look_at(next->eye, next->target).linear());
+  Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+  T_w_c.linear() = q0.slerp(w, q1).toRotationMatrix();
+  T_w_c.translation() = (1 - w) * prev.eye + w * next->eye;
+  return T_w_c;
+}
+
+// Slow panning across the desk towards the north wall; the whip turns 40 deg right and moves
+// 0.3 m right in two frames, then eases back over 2.5 s so relocalisation sees known places.
+View jerk_view(double t, double whip) {
+  constexpr double kWhipYaw = 40 * kDeg, kWhipShift = 0.3, kPitch = -20 * kDeg;
+  const double yaw = 0.5 * wave(t, 8, 0.5) - whip * kWhipYaw;  // 0 faces +y, positive left
+  const Vector3d eye(0.3 + 0.35 * wave(t, 9) + whip * kWhipShift, -1.45 + 0.1 * wave(t, 6.5),
+                     1.4 + 0.08 * wave(t, 5));
+  return {eye, eye + Vector3d(-std::sin(yaw), std::cos(yaw), std::tan(kPitch))};
+}
+
+double whip_weight(int i, int frames) {
+  const int start = jerk_whip_frame(frames);
+  if (i <= start) return 0;
+  if (i == start + 1) return 0.5;
+  constexpr double kEaseBack = 2.5;  // seconds
+  return 1 - smootherstep((i - start - 2) / kFrameRate / kEaseBack);
+}
+
+// The loop's last frame wraps round to phase 0: it closes on exactly the first pose.
+double loop_phase(int i, int frames) { return i == frames - 1 ? 0.0 : double(i) / (frames - 1); }
+
+Eigen::Isometry3d scripted_pose(Preset preset, int i, int frames) {
+  const double t = i / kFrameRate;
+  switch (preset) {
+    case Preset::kDesk:
+      return pose_of(desk_view(t));
+    case Preset::kLoop:
+      return pose_of(loop_view(loop_phase(i, frames)));
+    case Preset::kLowTexture:
+      return low_texture_pose(double(i) / (frames - 1));
+    case Preset::kJerk:
+      return pose_of(jerk_view(t, whip_weight(i, frames)));
+  }
+  throw std::logic_error("unknown preset");
+}
+
+}  // namespace
+
+const std::vector<std::string>& preset_names() {
+  static const std::vector<std::string> kNames = {"desk", "loop", "lowtexture", "jerk"};
+  return kNames;
+}
+
+std::string preset_name(Preset preset) { return preset_names().at(size_t(preset)); }
+
+Preset parse_preset(const std::string& name) {
+  const auto& names = preset_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+    throw InputError("--preset: unknown preset '" + name +
+                     "' (choose desk, loop, lowtexture or jerk)");
+  return Preset(it - names.begin());
+}
+
+int jerk_whip_frame(int frames) { return frames / 2 - 1; }
+
+Eigen::Isometry3d look_at(const Vector3d& eye, const Vector3d& target) {
+  const Vector3d z = (target - eye).normalized();
+  const Vector3d x = z.cross(Vector3d::UnitZ()).normalized();
+  Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+  T_w_c.linear() << x, z.cross(x), z;
+  T_w_c.translation() = eye;
+  return T_w_c;
+}
+
+std::vector<Eigen::Isometry3d> make_trajectory(Preset preset, int frames, uint64_t seed) {
+  if (frames < 2)
+    throw InputError("--frames: need at least 2 frames, got " + std::to_string(frames));
+  const double duration = (frames - 1) / kFrameRate;
+  // The loop's shake repeats over the loop, so that the last pose is the first one.
+  const bool loop = preset == Preset::kLoop;
+  const HandShake shake(seed, kShakeTranslation, kShakeRotation, loop ? duration : 0.0);
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < frames; ++i) {
+    const double t = loop ? loop_phase(i, frames) * duration : i / kFrameRate;
+    poses.push_back(scripted_pose(preset, i, frames) * shake.offset(t));
+  }
+  return poses;
+}
+
+}  // namespace slamkit::synth

@@ -1,0 +1,100 @@
+#include "datasets/synth/trajectory_presets.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "core/error.h"
+#include "core/pose.h"
+
+namespace slamkit::synth {
+namespace {
+
+struct Step {
+  double translation, rotation_deg;
+};
+
+std::vector<Step> steps(const std::vector<Eigen::Isometry3d>& poses) {
+  std::vector<Step> out;
+  for (size_t i = 1; i < poses.size(); ++i) {
+    const Eigen::Isometry3d delta = poses[i - 1].inverse() * poses[i];
+    out.push_back({delta.translation().norm(), rotation_angle(delta) * 180.0 / M_PI});
+  }
+  return out;
+}
+
+TEST(TrajectoryPresets, LookAtPutsTheTargetOnTheOpticalAxisWithTheImageUpright) {
+  const Eigen::Vector3d eye(1, 2, 1.5), target(0, 0, 0.7);
+  const Eigen::Isometry3d T_w_c = look_at(eye, target);
+  const Eigen::Vector3d target_c = T_w_c.inverse() * target;
+  EXPECT_NEAR(target_c.x(), 0, 1e-12);
+  EXPECT_NEAR(target_c.y(), 0, 1e-12);
+  EXPECT_GT(target_c.z(), 0);
+  // Image y (down) points against world z (up); image x is horizontal.
+  EXPECT_LT(T_w_c.linear().col(1).z(), 0);
+  EXPECT_NEAR(T_w_c.linear().col(0).z(), 0, 1e-12);
+  EXPECT_NEAR(T_w_c.linear().determinant(), 1, 1e-12);
+}
+
+TEST(TrajectoryPresets, LoopEndsExactlyOnItsStartPose) {
+  for (int frames : {20, 600}) {
+    const auto poses = make_trajectory(Preset::kLoop, frames, 1);
+    EXPECT_TRUE(poses.back().isApprox(poses.front(), 0.0)) << frames;
+    // ...after going somewhere: halfway it is across the room.
+    EXPECT_GT((poses[frames / 2].translation() - poses[0].translation()).norm(), 2.5);
+  }
+}
+
+TEST(TrajectoryPresets, JerkHasOneWhipMuchLargerThanEveryOtherStep) {
+  const int frames = 600;
+  const auto s = steps(make_trajectory(Preset::kJerk, frames, 1));
+  const int whip = jerk_whip_frame(frames);
+  double calm_rotation = 0, calm_translation = 0;
+  for (int i = 0; i < int(s.size()); ++i) {
+    if (i == whip || i == whip + 1) {
+      EXPECT_GT(s[i].rotation_deg, 15) << "step " << i;
+      EXPECT_LT(s[i].rotation_deg, 25) << "step " << i;
+      EXPECT_GT(s[i].translation, 0.10) << "step " << i;
+      EXPECT_LT(s[i].translation, 0.20) << "step " << i;
+    } else {
+      calm_rotation = std::max(calm_rotation, s[i].rotation_deg);
+      calm_translation = std::max(calm_translation, s[i].translation);
+    }
+  }
+  EXPECT_LT(calm_rotation, 15.0 / 5);  // 30 Hz: every other step is a fifth of the whip
+  EXPECT_LT(calm_translation, 0.10 / 5);
+}
+
+TEST(TrajectoryPresets, DeskMovesAtHandHeldSpeeds) {
+  const auto s = steps(make_trajectory(Preset::kDesk, 600, 1));
+  double metres = 0, degrees = 0;
+  for (const Step& step : s) metres += step.translation, degrees += step.rotation_deg;
+  const double seconds = s.size() / kFrameRate;
+  EXPECT_GT(metres / seconds, 0.3);
+  EXPECT_LT(metres / seconds, 0.5);
+  EXPECT_GT(degrees / seconds, 20);
+  EXPECT_LT(degrees / seconds, 40);
+}
+
+TEST(TrajectoryPresets, SameSeedSamePathOtherSeedOtherShake) {
+  for (const std::string& name : preset_names()) {
+    const Preset preset = parse_preset(name);
+    const auto a = make_trajectory(preset, 50, 3), b = make_trajectory(preset, 50, 3);
+    const auto c = make_trajectory(preset, 50, 4);
+    for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i].isApprox(b[i], 0.0)) << name;
+    // The shake differs by millimetres, not more.
+    const double shift = (a[25].translation() - c[25].translation()).norm();
+    EXPECT_GT(shift, 1e-5) << name;
+    EXPECT_LT(shift, 0.03) << name;
+  }
+}
+
+TEST(TrajectoryPresets, BadArgumentsAreInputErrors) {
+  EXPECT_THROW(parse_preset("spiral"), InputError);
+  EXPECT_THROW(make_trajectory(Preset::kDesk, 1, 1), InputError);
+  EXPECT_EQ(preset_name(parse_preset("lowtexture")), "lowtexture");
+}
+
+}  // namespace
+}  // namespace slamkit::synth
