@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/eval_run.h"
 #include "bin/sequence_options.h"
 #include "core/progress.h"
 #include "io/settings_yaml.h"
@@ -54,6 +55,23 @@ void track(const TrackArgs& args) {
   write_run_outputs(args.out, name, seq.camera(), settings, result);
   print_summary(seq, result);
   std::printf("output      %s\n", args.out.c_str());
+  if (!settings.pipeline.evaluate) return;
+  if (!seq.groundtruth()) {
+    std::printf("evaluation  skipped: the sequence has no groundtruth.txt\n");
+    return;
+  }
+  // The same run as `slamkit eval all GT trajectory.txt --out RUN`: ATE, and RPE over 1 s.
+  EvalArgs eval_args;
+  eval_args.gt = (seq.folder() / "groundtruth.txt").string();
+  eval_args.est = (std::filesystem::path(args.out) / "trajectory.txt").string();
+  eval_args.out_dir = args.out;
+  eval_args.system_name = "slamkit";
+  eval_args.title = name;
+  if (seq.duration() < 2.0) {  // too short for the benchmark's 1 s drift: consecutive frames
+    eval_args.unit = "f";
+    eval_args.rpe.delta = 1;
+  }
+  run_eval(eval_args, true, true);
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {
