@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job on the embedded default: sets up (scripts/setup.sh), then processes a sequence.
+# The main job on the embedded default: sets up (scripts/setup.sh), then tracks a sequence and
+# evaluates the trajectory against its groundtruth (ATE, RPE, plots).
 #   scripts/demo.sh                 # renders the default synthetic sequence and processes it
 #   scripts/demo.sh SEQUENCE_DIR    # a TUM sequence folder instead (e.g. from download_tum.sh)
 # Output goes to runs/demo/ (override with SLAMKIT_RUN_DIR).
@@ -17,3 +18,5 @@ if [[ -z "$sequence" ]]; then
   "$slamkit" synth --preset desk --frames 300 --out "$sequence"
 fi
 "$slamkit" info "$sequence"
+"$slamkit" track "$sequence" --out "$run_dir/track"
+echo "demo: trajectory, tracking report, metrics and plots in $run_dir/track"

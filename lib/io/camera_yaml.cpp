@@ -3,9 +3,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "core/error.h"
+#include "io/yaml_file.h"
 
 namespace slamkit {
 namespace {
@@ -32,13 +32,7 @@ double read_field(const YAML::Node& root, const std::string& path, const char* k
 
 Camera read_camera_yaml(const std::filesystem::path& path) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw_input_error(name, "calibration file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(name);
-  } catch (const YAML::Exception& e) {
-    throw_input_error(name, e.mark.line + 1, "YAML error: " + e.msg);
-  }
+  const YAML::Node root = load_yaml_file(path, "calibration file");
   if (!root.IsMap()) throw_input_error(name, "expected a YAML map of calibration keys");
   Camera c;
   c.name = root["name"] ? root["name"].as<std::string>() : path.stem().string();
@@ -81,10 +75,7 @@ void write_camera_yaml(const std::filesystem::path& path, const Camera& c) {
   out << YAML::Key << "min_depth" << YAML::Value << c.min_depth;
   out << YAML::Key << "max_depth" << YAML::Value << c.max_depth;
   out << YAML::EndMap;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream file(path);
-  file << out.c_str() << "\n";
-  if (!file) throw_input_error(path.string(), "cannot write file");
+  write_yaml_file(path, out);
 }
 
 }  // namespace slamkit

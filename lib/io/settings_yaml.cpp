@@ -2,11 +2,11 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
 #include <set>
 #include <type_traits>
 
 #include "core/error.h"
+#include "io/yaml_file.h"
 #include "core/number_format.h"
 #include "io/settings_fields.h"
 
@@ -97,13 +97,7 @@ class YamlReader {
 
 void read_settings_yaml(const std::filesystem::path& path, Settings& settings) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw_input_error(name, "settings file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(name);
-  } catch (const YAML::Exception& e) {
-    throw_input_error(name, e.mark.line + 1, "YAML error: " + e.msg);
-  }
+  const YAML::Node root = load_yaml_file(path, "settings file");
   if (root.IsNull()) return;  // an empty file: all defaults
   if (!root.IsMap()) throw_input_error(name, "expected a YAML map of settings sections");
   YamlReader reader(root, "", name);
@@ -118,10 +112,7 @@ void write_settings_yaml(const std::filesystem::path& path, const Settings& sett
   Settings copy = settings;  // the visitor takes fields by reference; the writer only reads
   visit_fields(copy, writer);
   out << YAML::EndMap;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream file(path);
-  file << out.c_str() << "\n";
-  if (!file) throw_input_error(path.string(), "cannot write file");
+  write_yaml_file(path, out);
 }
 
 }  // namespace slamkit

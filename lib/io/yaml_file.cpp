@@ -1,0 +1,26 @@
+#include "io/yaml_file.h"
+
+#include <fstream>
+
+#include "core/error.h"
+
+namespace slamkit {
+
+YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& what) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw_input_error(name, what + " not found");
+  try {
+    return YAML::LoadFile(name);
+  } catch (const YAML::Exception& e) {
+    throw_input_error(name, e.mark.line + 1, "YAML error: " + e.msg);
+  }
+}
+
+void write_yaml_file(const std::filesystem::path& path, const YAML::Emitter& document) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path);
+  file << document.c_str() << "\n";
+  if (!file) throw_input_error(path.string(), "cannot write file");
+}
+
+}  // namespace slamkit

@@ -1,0 +1,16 @@
+#pragma once
+// Reading and writing whole YAML files with errors that name the file and line.
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <string>
+
+namespace slamkit {
+
+// Throws InputError "path: <what> not found" or "path:line: YAML error: ...".
+YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& what);
+
+// Writes the emitter's document, creating the folder. Throws InputError when it cannot.
+void write_yaml_file(const std::filesystem::path& path, const YAML::Emitter& document);
+
+}  // namespace slamkit
