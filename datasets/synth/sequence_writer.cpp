@@ -6,9 +6,9 @@
 #include <cinttypes>
 #include <cstdio>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 
 #include "core/error.h"
+#include "io/png_file.h"
 #include "core/trajectory.h"
 #include "datasets/synth/renderer.h"
 #include "io/camera_yaml.h"
@@ -108,11 +108,6 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
   create_folder(spec.out / "depth");
   const Camera camera = synthetic_camera();
 
-  // Fast PNG compression: at the default level writing costs more than rendering. Sensor
-  // noise leaves deflate few long matches to find: run-length matching is faster and, on
-  // these images, smaller too. (The strategy must follow the level, which resets it.)
-  const std::vector<int> png = {cv::IMWRITE_PNG_COMPRESSION, 1, cv::IMWRITE_PNG_STRATEGY,
-                                cv::IMWRITE_PNG_STRATEGY_RLE};
   std::atomic<size_t> done{0};
   std::string failed;  // the first file that could not be written
   const int threads = spec.threads > 0 ? spec.threads : omp_get_max_threads();
@@ -121,20 +116,19 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
     const RenderedFrame frame = render_frame(scene, camera, poses[i], spec.sensor, spec.seed, i);
     const std::string name = frame_stamp_text(i) + ".png";
     const fs::path rgb = spec.out / "rgb" / name, depth = spec.out / "depth" / name;
-    bool ok_rgb = false, ok_depth = false;
+    // Fast PNG compression (write_png's level 1, run-length): at the default level writing
+    // costs more than rendering, and sensor noise leaves deflate few long matches anyway.
     try {  // exceptions must not escape an OpenMP region
-      ok_rgb = cv::imwrite(rgb.string(), frame.bgr, png);
-      ok_depth = ok_rgb && cv::imwrite(depth.string(), frame.depth, png);
-    } catch (const cv::Exception&) {
-    }
-    if (!ok_rgb || !ok_depth) {
+      write_png(rgb, frame.bgr);
+      write_png(depth, frame.depth);
+    } catch (const InputError& e) {
 #pragma omp critical(synth_failed)
-      if (failed.empty()) failed = (ok_rgb ? depth : rgb).string();
+      if (failed.empty()) failed = e.what();
     }
     ++done;
     if (on_progress && omp_get_thread_num() == 0) on_progress(done);
   }
-  if (!failed.empty()) throw_input_error(failed, "cannot write image");
+  if (!failed.empty()) throw InputError(failed);
   if (on_progress) on_progress(done);
 
   write_lists(spec);

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/association.h"
 #include "core/error.h"
 #include "io/camera_yaml.h"
+#include "io/png_file.h"
 #include "io/text_table.h"
 #include "io/trajectory_io.h"
 
@@ -90,13 +90,11 @@ std::string describe_type(const cv::Mat& m) {
   return std::string(bits) + " " + std::to_string(m.channels()) + "-channel";
 }
 
-cv::Mat read_png(const fs::path& folder, const fs::path& list, const StampedFile& f) {
+cv::Mat read_listed_png(const fs::path& folder, const fs::path& list, const StampedFile& f) {
   const fs::path path = folder / f.file;
   if (!fs::exists(path))
     throw_input_error(list.string(), f.line, "listed image does not exist: " + path.string());
-  cv::Mat image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
-  if (image.empty()) throw_input_error(path.string(), "cannot decode image");
-  return image;
+  return read_png(path);
 }
 
 }  // namespace
@@ -147,8 +145,8 @@ TumSequence TumSequence::open(const fs::path& folder, const SequenceOptions& opt
 RgbdFrame TumSequence::load(size_t i) const {
   const FrameFiles& files = frames_.at(i);
   const fs::path rgb_list = folder_ / "rgb.txt", depth_list = folder_ / "depth.txt";
-  cv::Mat rgb = read_png(folder_, rgb_list, files.rgb);
-  cv::Mat raw_depth = read_png(folder_, depth_list, files.depth);
+  cv::Mat rgb = read_listed_png(folder_, rgb_list, files.rgb);
+  cv::Mat raw_depth = read_listed_png(folder_, depth_list, files.depth);
   const std::string rgb_path = (folder_ / files.rgb.file).string();
   const std::string depth_path = (folder_ / files.depth.file).string();
 
