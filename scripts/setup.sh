@@ -11,7 +11,7 @@ build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 # Build tools, the libraries of the stack, the test framework, and matplotlib for the plots.
 packages=(
   g++ cmake make pkg-config
-  libeigen3-dev libopencv-dev libceres-dev libpcl-dev libyaml-cpp-dev
+  libeigen3-dev libopencv-dev libceres-dev libpcl-dev libyaml-cpp-dev libpng-dev zlib1g-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
   python3-matplotlib
 )
