@@ -24,6 +24,12 @@ std::array<double, 7> pose_to_tum(const Eigen::Isometry3d& T) {
   return {t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w()};
 }
 
+Eigen::Isometry3d orthonormalised(const Eigen::Isometry3d& T) {
+  Eigen::Isometry3d out = T;
+  out.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
+  return out;
+}
+
 double rotation_angle(const Eigen::Isometry3d& T) {
   return Eigen::AngleAxisd(T.rotation()).angle();
 }

@@ -14,6 +14,11 @@ std::optional<Eigen::Isometry3d> pose_from_tum(const std::array<double, 7>& valu
 // The TUM fields of a pose, quaternion with qw >= 0 so that output is canonical.
 std::array<double, 7> pose_to_tum(const Eigen::Isometry3d& T);
 
+// The pose with its rotation projected back onto SO(3). Chains of products drift off it by
+// rounding, and Isometry3d::inverse() (a transpose) then amplifies the drift: tracking
+// normalises every pose it keeps.
+Eigen::Isometry3d orthonormalised(const Eigen::Isometry3d& T);
+
 // Rotation angle of a pose in radians, in [0, pi], robust near 0 and pi.
 double rotation_angle(const Eigen::Isometry3d& T);
 

@@ -78,6 +78,7 @@ void visit_fields(MotionBaSettings& s, V& v) {
   v.field("use_depth", s.use_depth);
   v.field("virtual_bf", s.virtual_bf);
   v.field("min_inliers", s.min_inliers);
+  v.field("min_matches_after_dense", s.min_matches_after_dense);
 }
 
 template <class V>

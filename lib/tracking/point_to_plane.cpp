@@ -44,9 +44,8 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
             Eigen::Vector3d((u - cam.cx) / cam.fx * z, y * z, z).cast<float>();
     }
   }
-  // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does: neighbour
-  // differences of raw Kinect depth are mostly noise beyond a metre, and the alignment then
-  // never settles. The residual itself still uses the measured points.
+  // (beyond, optional) Normals from an edge-preserving smoothed depth, as KinectFusion does.
+  // The residual itself still uses the measured points.
   std::vector<Eigen::Vector3f> smoothed_points;
   if (settings.normal_smoothing_diameter > 0) {
     cv::Mat smoothed;

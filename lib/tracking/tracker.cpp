@@ -7,6 +7,7 @@
 #include "features/descriptor_matcher.h"
 #include "features/projection_matcher.h"
 #include "keyframes/keyframe_rule.h"
+#include "core/pose.h"
 #include "core/stopwatch.h"
 #include "tracking/failure_check.h"
 #include "tracking/icp_svd_ransac.h"
@@ -74,7 +75,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
       record.solver = PoseSolver::kMotionModel;
       estimate.T_w_c = motion_model_pose(frame.stamp);
     }
-    record.T_w_c = estimate.T_w_c;
+    record.T_w_c = orthonormalised(estimate.T_w_c);
     record.inliers = int(estimate.inliers.size());
     if (!record.lost) decide_and_insert_keyframe(frame, estimate.inliers, record);
     record.keyframe_ms = watch.lap();
@@ -260,7 +261,11 @@ Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
 
 void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
                           TrackedFrame& record) const {
-  if (int(estimate.inliers.size()) < settings_.tracking.motion_ba.min_inliers) return;
+  const MotionBaSettings& ba = settings_.tracking.motion_ba;
+  const int needed = record.solver == PoseSolver::kPointToPlane
+                         ? std::max(ba.min_inliers, ba.min_matches_after_dense)
+                         : ba.min_inliers;
+  if (int(estimate.inliers.size()) < needed) return;
   std::vector<PointObservation> observations;
   for (const Match& m : estimate.inliers) {
     const cv::KeyPoint& kp = frame.features.keypoints[size_t(m.keypoint)];
@@ -270,7 +275,7 @@ void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
                             frame.features.pyramid.scales[size_t(kp.octave)]});
   }
   const PoseRefinement refined =
-      motion_only_ba(observations, camera_, estimate.T_w_c, settings_.tracking.motion_ba);
+      motion_only_ba(observations, camera_, estimate.T_w_c, ba);
   if (!refined.ok) return;  // the solver's estimate stands (dense alignment needs no points)
   record.refined = true;
   estimate.T_w_c = refined.T_w_c;

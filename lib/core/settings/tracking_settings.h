@@ -45,10 +45,12 @@ struct PointToPlaneSettings {
   // the RMS point distance (dimensionless, 0..1). A view of a single plane leaves 3
   // directions unconstrained and scores ~0; a room corner scores ~0.01-0.1 (ours).
   double min_eigenvalue = 1e-3;
-  // (beyond) Normals are computed on depth smoothed by a bilateral filter of this diameter
-  // (pixels) and depth sigma (metres), as KinectFusion does; 0 = the paper's raw neighbour
-  // differences. Kinect noise (~2 mm at 1 m) otherwise dominates single-pixel differences.
-  int normal_smoothing_diameter = 7;
+  // (beyond, off by default) Normals from depth smoothed by a bilateral filter of this
+  // diameter (pixels) and depth sigma (metres), as KinectFusion does; 0 = the paper's raw
+  // neighbour differences. Smoothing pairs ~5x more pixels, but on the synthetic lowtexture
+  // corner it pulled the solution 2.6 cm off a start at the exact pose (raw: 0.8 mm), and it
+  // costs ~4 ms a frame.
+  int normal_smoothing_diameter = 0;
   double normal_smoothing_sigma_depth = 0.03;
 };
 
@@ -64,6 +66,12 @@ struct MotionBaSettings {
   bool use_depth = true;   // (beyond) default on
   double virtual_bf = 40;  // (ORB-SLAM2) "Camera.bf" of its TUM settings: fx * 7.7 cm
   int min_inliers = 10;    // (ORB-SLAM2) fewer inliers: the refinement has failed
+  // (ours) After dense alignment the matches are few and unverified, and on plain surfaces
+  // they sit on shading edges: refining on ~10 of them moved poses by 1-6 cm on the
+  // synthetic lowtexture wall, where the dense pose alone was right to 0.2 mm. With fewer
+  // matches than this the dense pose stands. The paper refines at any count: set it to
+  // min_inliers for that.
+  int min_matches_after_dense = 50;
 };
 
 // Plausibility of a tracked pose.
