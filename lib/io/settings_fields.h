@@ -60,6 +60,7 @@ void visit_fields(PointToPlaneSettings& s, V& v) {
   v.field("max_pair_distance", s.max_pair_distance);
   v.field("max_normal_angle_deg", s.max_normal_angle_deg);
   v.field("max_neighbour_depth_ratio", s.max_neighbour_depth_ratio);
+  v.field("central_difference_normals", s.central_difference_normals);
   v.field("convergence_rotation", s.convergence_rotation);
   v.field("convergence_translation", s.convergence_translation);
   v.field("min_correspondences", s.min_correspondences);

@@ -36,6 +36,10 @@ struct PointToPlaneSettings {
   // Neighbours whose depths differ by more than this fraction of z give no normal (a
   // depth edge, not a surface). A 80-degree grazing plane at 640 px still passes.
   double max_neighbour_depth_ratio = 0.05;  // (ours)
+  // (beyond) Normals from central differences (u-1..u+1, v-1..v+1) rather than the paper's
+  // forward ones (u..u+1, v..v+1), which correlate a point's noise with its own normal and
+  // bias the rotation; false = the paper's.
+  bool central_difference_normals = true;
   // Converged when the last increment moves less than these (ours).
   double convergence_rotation = 1e-3;     // radians (0.057 deg)
   double convergence_translation = 1e-3;  // metres
