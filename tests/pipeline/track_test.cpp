@@ -107,25 +107,29 @@ TEST(Track, SameTrajectoryFileWithOneAndTwoThreads) {
 }
 
 TEST(Track, SyntheticDeskCentimetreAccurateNoFrameLost) {
-  const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kDesk, 300));
+  const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kDesk, 600));
   const RunResult result = run_batch(seq, Settings{});
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
-  std::printf("synthetic desk 300: ATE RMSE %.4f m\n", rmse);
+  std::printf("synthetic desk 600: ATE RMSE %.4f m\n", rmse);
   EXPECT_LE(rmse, 0.01);
 }
 
-// Open acceptance criterion of the front-end issue, kept visible as a disabled test: the
-// point-to-plane branch carries the wall frames (136 of 300), but tracking loses 15 frames
-// where the view enters and leaves the wall and the ATE is 0.16 m, not < 3 cm. Run it with
-// --gtest_also_run_disabled_tests.
-TEST(Track, DISABLED_LowTextureWallCarriedByPointToPlane) {
-  const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kLowTexture, 300));
+// 600 frames, the generator's default: the preset is scripted by phase, so fewer frames
+// would make it faster than hand-held (300 frames peak at 2.7 m/s and 240 deg/s).
+TEST(Track, LowTextureWallCarriedByPointToPlane) {
+  constexpr int kFrames = 600;
+  const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kLowTexture, kFrames));
   const RunResult result = run_batch(seq, Settings{});
-  int dense = 0;
-  for (const TrackedFrame& f : result.frames) dense += f.solver == PoseSolver::kPointToPlane && !f.lost;
-  std::printf("lowtexture: %d frames by point-to-plane, %d lost\n", dense, count_lost(result));
-  EXPECT_GE(dense, 20);
+  // The camera faces the plain corner from 32% to 72% of the sequence (trajectory_presets.cpp):
+  // inside that stretch there are too few features for the closed form.
+  const size_t wall_begin = size_t(0.35 * kFrames), wall_end = size_t(0.70 * kFrames);
+  int dense_on_wall = 0;
+  for (size_t i = wall_begin; i < wall_end; ++i)
+    dense_on_wall += result.frames[i].solver == PoseSolver::kPointToPlane;
+  std::printf("lowtexture: %d of %zu wall frames by point-to-plane, %d lost\n", dense_on_wall,
+              wall_end - wall_begin, count_lost(result));
+  EXPECT_EQ(dense_on_wall, int(wall_end - wall_begin));
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("lowtexture: ATE RMSE %.4f m\n", rmse);
