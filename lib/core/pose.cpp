@@ -1,5 +1,6 @@
 #include "core/pose.h"
 
+#include <Eigen/SVD>
 #include <cmath>
 
 namespace slamkit {
@@ -26,7 +27,12 @@ std::array<double, 7> pose_to_tum(const Eigen::Isometry3d& T) {
 
 Eigen::Isometry3d orthonormalised(const Eigen::Isometry3d& T) {
   Eigen::Isometry3d out = T;
-  out.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
+  // The polar decomposition's rotation U V^T, the nearest one. (Isometry3d::rotation() would
+  // not do: for an isometry Eigen returns linear() unchanged.)
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(T.linear(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d V = svd.matrixV();
+  if ((svd.matrixU() * V.transpose()).determinant() < 0) V.col(2) = -V.col(2);
+  out.linear() = svd.matrixU() * V.transpose();
   return out;
 }
 
