@@ -7,6 +7,7 @@
 
 #include "features/cell_grid.h"
 #include "features/descriptor.h"
+#include "features/equivalent_grey.h"
 #include "features/fast_detector.h"
 #include "features/keypoint_selection.h"
 #include "features/orientation.h"
@@ -61,14 +62,6 @@ std::vector<Corner> detect_level(const cv::Mat& level, int quota, const OrbSetti
   return chosen;
 }
 
-cv::Mat to_grey(const cv::Mat& image) {
-  if (image.type() == CV_8UC1) return image.clone();  // the pyramid must not alias the caller's
-  if (image.type() != CV_8UC3) throw std::invalid_argument("extract_orb: needs CV_8UC3 or CV_8UC1");
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  return grey;
-}
-
 }  // namespace
 
 FrameFeatures extract_orb(const cv::Mat& image, const Camera& camera, const OrbSettings& settings) {
@@ -78,7 +71,7 @@ FrameFeatures extract_orb(const cv::Mat& image, const Camera& camera, const OrbS
     throw std::invalid_argument("extract_orb: edge_threshold smaller than the patches it guards");
   }
   FrameFeatures features;
-  features.pyramid = build_pyramid(to_grey(image), settings.pyramid_levels, settings.scale_factor);
+  features.pyramid = build_pyramid(equivalent_grey(image), settings.pyramid_levels, settings.scale_factor);
   const ImagePyramid& pyramid = features.pyramid;
   const std::vector<int> quota =
       features_per_level(settings.num_features, pyramid.size(), settings.scale_factor);

@@ -8,8 +8,9 @@
 
 namespace slamkit {
 
-// `image` is BGR (CV_8UC3, as TumSequence loads it) or grey (CV_8UC1). Deterministic: the same
-// image and settings give the same features bit for bit, on any thread.
+// `image` is BGR (CV_8UC3, as TumSequence loads it; detection runs on its equivalent grey) or
+// grey (CV_8UC1). Deterministic: the same image and settings give the same features bit for
+// bit, on any thread.
 FrameFeatures extract_orb(const cv::Mat& image, const Camera& camera, const OrbSettings& settings);
 
 }  // namespace slamkit

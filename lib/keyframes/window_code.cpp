@@ -2,7 +2,6 @@
 
 #include <bitset>
 #include <cmath>
-#include <opencv2/imgproc.hpp>
 #include <random>
 #include <stdexcept>
 
@@ -28,21 +27,24 @@ uint8_t WindowPattern::choice(int level, int wx, int wy) const {
   return choices_[level][size_t(wy) * (level_sizes_[level].width / 2) + wx];
 }
 
-WindowCode encode_windows(const cv::Mat& bgr, const WindowPattern& pattern, double tau) {
-  if (bgr.type() != CV_8UC3) throw std::invalid_argument("encode_windows: expects 8-bit BGR");
-  // Equivalent grey I_e = (R + G + B) / 3, as the paper defines it (not the luma weights),
-  // rounded to 8 bits like any grey image: 8-bit resizing is several times faster than float.
-  cv::Mat grey;
-  cv::transform(bgr, grey, cv::Matx13f(1.f / 3, 1.f / 3, 1.f / 3));
-  if (tau < 0) tau = cv::mean(grey)[0];
+bool fits(const ImagePyramid& grey, const WindowPattern& pattern) {
+  if (grey.size() < pattern.levels()) return false;
+  for (int level = 0; level < pattern.levels(); ++level)
+    if (grey.levels[level].size() != pattern.level_size(level)) return false;
+  return true;
+}
+
+WindowCode encode_windows(const ImagePyramid& grey, const WindowPattern& pattern, double tau) {
+  if (!fits(grey, pattern) || grey.levels[0].type() != CV_8UC1)
+    throw std::invalid_argument("encode_windows: the pyramid does not fit the window pattern");
+  if (tau < 0) tau = cv::mean(grey.levels[0])[0];
 
   WindowCode code;
   code.bits = pattern.total_bits();
   code.words.assign((code.bits + 63) / 64, 0);
   size_t bit = 0;
-  cv::Mat level_image = grey;
   for (int level = 0; level < pattern.levels(); ++level) {
-    if (level > 0) cv::resize(grey, level_image, pattern.level_size(level), 0, 0, cv::INTER_AREA);
+    const cv::Mat& level_image = grey.levels[level];
     const int windows_x = level_image.cols / 2, windows_y = level_image.rows / 2;
     for (int wy = 0; wy < windows_y; ++wy) {
       const uchar* rows[2] = {level_image.ptr<uchar>(2 * wy), level_image.ptr<uchar>(2 * wy + 1)};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/settings/keyframe_settings.h"
+#include "features/image_pyramid.h"
 
 namespace slamkit {
 
@@ -33,9 +34,15 @@ struct WindowCode {
   size_t bits = 0;
 };
 
-// Encodes a BGR image. tau is the equivalent grey's mean over the level-0 image unless given.
-WindowCode encode_windows(const cv::Mat& bgr, const WindowPattern& pattern,
+// Encodes a frame from the INTER_AREA pyramid of its equivalent grey (R + G + B) / 3, whose
+// first levels must have the pattern's sizes (the feature pyramid does when the keyframe and
+// ORB settings agree on levels and scale). tau is level 0's mean unless given. Throws
+// std::invalid_argument when the pyramid does not fit the pattern.
+WindowCode encode_windows(const ImagePyramid& grey, const WindowPattern& pattern,
                           double tau = -1.0);
+
+// Whether `grey` has the pattern's level sizes, for encode_windows.
+bool fits(const ImagePyramid& grey, const WindowPattern& pattern);
 
 // zeta = 1 - Hamming(a, b) / n.
 double window_similarity(const WindowCode& a, const WindowCode& b);

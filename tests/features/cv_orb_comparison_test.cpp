@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "features/descriptor_matcher.h"
+#include "features/equivalent_grey.h"
 #include "features/frame_features.h"
 #include "features/orb_extractor.h"
 #include "io/tum_sequence.h"
@@ -40,8 +41,9 @@ Features ours(const RgbdFrame& frame, const Camera& camera, const OrbSettings& s
 
 Features opencv_orb(const RgbdFrame& frame, const Camera& camera) {
   Features f;
+  // On the image ours detects on, so that the two methods are compared, not two greys.
   cv::ORB::create(1000, 1.2f, 4)
-      ->detectAndCompute(frame.rgb, cv::noArray(), f.keypoints, f.descriptors);
+      ->detectAndCompute(equivalent_grey(frame.rgb), cv::noArray(), f.keypoints, f.descriptors);
   std::vector<Eigen::Vector2d> raw;
   for (const cv::KeyPoint& k : f.keypoints) raw.emplace_back(k.pt.x, k.pt.y);
   f.undistorted = camera.undistort_pixels(raw);

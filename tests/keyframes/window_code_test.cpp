@@ -2,12 +2,20 @@
 
 #include <gtest/gtest.h>
 
+#include "features/equivalent_grey.h"
 #include "io/tum_sequence.h"
 #include "keyframes/keyframe_rule.h"
 #include "support/test_data.h"
 
 namespace slamkit {
 namespace {
+
+// A frame's code as the pipeline makes it: from the pyramid of its equivalent grey.
+WindowCode encode(const cv::Mat& bgr, const WindowPattern& pattern) {
+  const KeyframeSettings settings;
+  return encode_windows(build_pyramid(equivalent_grey(bgr), settings.pyramid_levels, settings.scale_factor),
+                        pattern);
+}
 
 cv::Mat two_halves(int boundary_x) {
   cv::Mat image(480, 640, CV_8UC3, cv::Scalar(50, 50, 50));
@@ -20,15 +28,15 @@ TEST(WindowCode, BitCountMatchesTheLevelsWindows) {
   const WindowPattern pattern({640, 480}, settings);
   // 640x480, 533x400, 444x333, 370x278 -> windows 320*240 + 266*200 + 222*166 + 185*139.
   EXPECT_EQ(pattern.total_bits(), size_t(76800 + 53200 + 36852 + 25715));
-  EXPECT_EQ(encode_windows(two_halves(320), pattern).bits, pattern.total_bits());
+  EXPECT_EQ(encode(two_halves(320), pattern).bits, pattern.total_bits());
 }
 
 TEST(WindowCode, SimilarityCountsTheWindowsThatChanged) {
   KeyframeSettings settings;
   settings.pyramid_levels = 1;  // level 0 only: no resampling blur, so the answer is exact
   const WindowPattern pattern({640, 480}, settings);
-  const WindowCode a = encode_windows(two_halves(320), pattern);
-  const WindowCode b = encode_windows(two_halves(300), pattern);
+  const WindowCode a = encode(two_halves(320), pattern);
+  const WindowCode b = encode(two_halves(300), pattern);
   // The windows with x in [300, 320) flip: 10 per row over 240 rows, of 76,800.
   EXPECT_DOUBLE_EQ(window_similarity(a, b), 1.0 - 2400.0 / 76800.0);
   EXPECT_DOUBLE_EQ(window_similarity(a, a), 1.0);
@@ -53,9 +61,9 @@ TEST(WindowCode, RealFramesGrowLessSimilarWithDistance) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg2_desk_first50");
   const TumSequence seq = TumSequence::open(folder);
   const WindowPattern pattern({640, 480}, KeyframeSettings{});
-  const WindowCode first = encode_windows(seq.load(0).rgb, pattern);
-  const double near = window_similarity(first, encode_windows(seq.load(1).rgb, pattern));
-  const double far = window_similarity(first, encode_windows(seq.load(49).rgb, pattern));
+  const WindowCode first = encode(seq.load(0).rgb, pattern);
+  const double near = window_similarity(first, encode(seq.load(1).rgb, pattern));
+  const double far = window_similarity(first, encode(seq.load(49).rgb, pattern));
   EXPECT_GT(near, 0.85);
   EXPECT_LT(far, near);
 }
@@ -64,9 +72,9 @@ TEST(KeyframeRule, TakesTheMinimumOverTheKeyframeAndItsNeighbours) {
   KeyframeSettings settings;
   settings.pyramid_levels = 1;
   const WindowPattern pattern({640, 480}, settings);
-  const WindowCode same = encode_windows(two_halves(320), pattern);
-  const WindowCode shifted = encode_windows(two_halves(300), pattern);
-  const WindowCode moved = encode_windows(two_halves(100), pattern);
+  const WindowCode same = encode(two_halves(320), pattern);
+  const WindowCode shifted = encode(two_halves(300), pattern);
+  const WindowCode moved = encode(two_halves(100), pattern);
   // `moved` differs from `same` in pixel columns 100..320, i.e. 110 of 320 window columns:
   // zeta = 1 - 110/320 = 0.656 < 0.7; from `shifted` in 100 of 320.
   const KeyframeDecision d = decide_keyframe(moved, {&same, &shifted}, 100, 100, settings);
@@ -88,6 +96,13 @@ TEST(KeyframeRule, NeighboursAreAroundTheKeyframeAndBeforeTheCurrentFrame) {
   EXPECT_EQ(keyframe_neighbours(5, 9, settings), (std::vector<size_t>{4, 5, 6}));
   EXPECT_EQ(keyframe_neighbours(5, 6, settings), (std::vector<size_t>{4, 5}));
   EXPECT_EQ(keyframe_neighbours(0, 3, settings), (std::vector<size_t>{0, 1}));
+}
+
+TEST(WindowCode, APyramidOfOtherSizesIsRefused) {
+  const WindowPattern pattern({640, 480}, KeyframeSettings{});
+  const ImagePyramid small = build_pyramid(cv::Mat(240, 320, CV_8UC1, cv::Scalar(9)), 4, 1.2);
+  EXPECT_FALSE(fits(small, pattern));
+  EXPECT_THROW(encode_windows(small, pattern), std::invalid_argument);
 }
 
 }  // namespace
