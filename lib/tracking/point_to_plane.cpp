@@ -44,7 +44,7 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
             Eigen::Vector3d((u - cam.cx) / cam.fx * z, y * z, z).cast<float>();
     }
   }
-  // (beyond, optional) Normals from an edge-preserving smoothed depth, as KinectFusion does.
+  // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does.
   // The residual itself still uses the measured points.
   std::vector<Eigen::Vector3f> smoothed_points;
   if (settings.normal_smoothing_diameter > 0) {
