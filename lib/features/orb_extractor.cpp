@@ -99,6 +99,7 @@ FrameFeatures extract_orb(const cv::Mat& image, const Camera& camera, const OrbS
   features.descriptors.create(static_cast<int>(features.keypoints.size()), kDescriptorBytes, CV_8U);
   int row = 0;
   for (const cv::Mat& d : level_descriptors) {
+    if (d.empty()) continue;  // copyTo from an empty Mat would release the fixed-size rows
     d.copyTo(features.descriptors.rowRange(row, row + d.rows));
     row += d.rows;
   }

@@ -67,6 +67,22 @@ TEST(OrbExtractor, KeypointsDescriptorsAndPositionsAreConsistent) {
   EXPECT_GT(per_level[3], 50);
 }
 
+// A plain image, and one with a single small square near the corner, inside the border that
+// the coarsest level leaves out: levels without corners must not break the assembly of the
+// others (they did: OpenCV asserted while copying no rows).
+TEST(OrbExtractor, LevelsWithoutCornersAreFine) {
+  cv::Mat plain(480, 640, CV_8UC3, cv::Scalar(120, 130, 140));
+  EXPECT_EQ(extract_orb(plain, Camera::freiburg3(), OrbSettings{}).size(), 0u);
+  cv::Mat square = plain.clone();
+  square(cv::Rect(24, 24, 9, 9)).setTo(cv::Scalar(250, 250, 250));
+  const FrameFeatures f = extract_orb(square, Camera::freiburg3(), OrbSettings{});
+  EXPECT_GT(f.size(), 0u);
+  EXPECT_EQ(f.descriptors.rows, int(f.size()));
+  std::vector<int> per_level(4, 0);
+  for (const cv::KeyPoint& k : f.keypoints) ++per_level[size_t(k.octave)];
+  EXPECT_EQ(per_level[3], 0) << "the test needs an empty coarse level";
+}
+
 TEST(OrbExtractor, UndistortedEqualsRawWithoutDistortion) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg2_desk_first50");
   const FrameFeatures f = extract_orb(fr2_frame(folder), Camera::freiburg3(), OrbSettings{});
