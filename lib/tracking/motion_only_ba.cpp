@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "tracking/reprojection_residual.h"
 
@@ -33,18 +34,13 @@ Eigen::Isometry3d from_blocks(const PoseBlocks& b) {
   return T_c_w.inverse();
 }
 
-template <int kDim>
-ReprojectionResidual<kDim> residual_of(const PointObservation& o, const ResidualIntrinsics& k) {
-  return ReprojectionResidual<kDim>(o.p_w, o.uv, o.depth, o.sigma, k);
-}
-
 // The chi-square statistic of one observation; infinite behind the camera.
-template <int kDim>
-double chi2(const ReprojectionResidual<kDim>& residual, const PoseBlocks& pose) {
-  double r[kDim];
-  if (!residual(pose.q, pose.t, r)) return std::numeric_limits<double>::infinity();
+double chi2(const ceres::CostFunction& residual, const PoseBlocks& pose) {
+  const double* parameters[] = {pose.q, pose.t};
+  double r[3];
+  if (!residual.Evaluate(parameters, r, nullptr)) return std::numeric_limits<double>::infinity();
   double sum = 0;
-  for (double x : r) sum += x * x;
+  for (int i = 0; i < residual.num_residuals(); ++i) sum += r[i] * r[i];
   return sum;
 }
 
@@ -56,18 +52,24 @@ PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
   const int n = static_cast<int>(observations.size());
   PoseBlocks pose = to_blocks(T_w_c_guess);
   const ResidualIntrinsics k{camera.fx, camera.fy, camera.cx, camera.cy, settings.virtual_bf};
+  // Observations with depth get the disparity residual too (and the 3-dof chi-square test).
   std::vector<bool> has_depth(n);
-  for (int i = 0; i < n; ++i)
-    has_depth[i] = settings.use_depth && camera.is_valid_depth(observations[i].depth);
+  std::vector<std::unique_ptr<ceres::CostFunction>> residuals(n);
+  for (int i = 0; i < n; ++i) {
+    const PointObservation& o = observations[i];
+    has_depth[i] = settings.use_depth && camera.is_valid_depth(o.depth);
+    if (has_depth[i])
+      residuals[i] = std::make_unique<ReprojectionResidual<3>>(o.p_w, o.uv, o.depth, o.sigma, k);
+    else
+      residuals[i] = std::make_unique<ReprojectionResidual<2>>(o.p_w, o.uv, o.depth, o.sigma, k);
+  }
 
   // Classifies every observation, outliers included, so that one can come back.
   std::vector<bool> inliers(n);
   auto classify = [&]() {
     int count = 0;
     for (int i = 0; i < n; ++i) {
-      const PointObservation& o = observations[i];
-      inliers[i] = has_depth[i] ? chi2(residual_of<3>(o, k), pose) < settings.chi2_3d
-                                : chi2(residual_of<2>(o, k), pose) < settings.chi2_2d;
+      inliers[i] = chi2(*residuals[i], pose) < (has_depth[i] ? settings.chi2_3d : settings.chi2_2d);
       count += inliers[i];
     }
     return count;
@@ -83,6 +85,7 @@ PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
   ceres::EigenQuaternionManifold quaternion_manifold;
   ceres::HuberLoss huber_2d(std::sqrt(settings.chi2_2d)), huber_3d(std::sqrt(settings.chi2_3d));
   ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Solver::Options options;
@@ -99,15 +102,8 @@ PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
     const bool robust = round < settings.robust_rounds;
     for (int i = 0; i < n; ++i) {
       if (!inliers[i]) continue;
-      const PointObservation& o = observations[i];
-      if (has_depth[i])
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ReprojectionResidual<3>, 3, 4, 3>(
-                                     new ReprojectionResidual<3>(residual_of<3>(o, k))),
-                                 robust ? &huber_3d : nullptr, pose.q, pose.t);
-      else
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ReprojectionResidual<2>, 2, 4, 3>(
-                                     new ReprojectionResidual<2>(residual_of<2>(o, k))),
-                                 robust ? &huber_2d : nullptr, pose.q, pose.t);
+      ceres::LossFunction* loss = robust ? (has_depth[i] ? &huber_3d : &huber_2d) : nullptr;
+      problem.AddResidualBlock(residuals[i].get(), loss, pose.q, pose.t);
     }
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
