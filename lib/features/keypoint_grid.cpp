@@ -14,6 +14,7 @@ KeypointGrid::KeypointGrid(std::vector<Eigen::Vector2d> points, double cell_size
   Eigen::Vector2d lo = points_[0], hi = points_[0];
   for (const Eigen::Vector2d& p : points_) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   origin_ = lo;
+  far_corner_ = hi;
   cols_ = static_cast<int>(std::floor((hi.x() - lo.x()) / cell_size_)) + 1;
   rows_ = static_cast<int>(std::floor((hi.y() - lo.y()) / cell_size_)) + 1;
   cells_.resize(static_cast<size_t>(cols_) * rows_);
@@ -32,10 +33,18 @@ int KeypointGrid::row(double y) const {
 
 std::vector<int> KeypointGrid::within(const Eigen::Vector2d& centre, double radius) const {
   std::vector<int> found;
-  if (points_.empty() || radius < 0) return found;
+  within(centre, radius, found);
+  return found;
+}
+
+void KeypointGrid::within(const Eigen::Vector2d& centre, double radius,
+                          std::vector<int>& found) const {
+  found.clear();
+  if (points_.empty() || radius < 0) return;
   const Eigen::Vector2d lo = centre.array() - radius, hi = centre.array() + radius;
-  // A search box wholly outside the bounds clamps onto border cells; the distance test below
-  // rejects their points.
+  // A search box that misses the points' bounds finds nothing (most map points projected
+  // outside the image do).
+  if ((hi.array() < origin_.array()).any() || (lo.array() > far_corner_.array()).any()) return;
   for (int r = row(lo.y()); r <= row(hi.y()); ++r) {
     for (int c = column(lo.x()); c <= column(hi.x()); ++c) {
       for (int i : cells_[r * cols_ + c]) {
@@ -44,7 +53,6 @@ std::vector<int> KeypointGrid::within(const Eigen::Vector2d& centre, double radi
     }
   }
   std::sort(found.begin(), found.end());
-  return found;
 }
 
 }  // namespace slamkit

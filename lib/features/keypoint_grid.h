@@ -12,6 +12,8 @@ class KeypointGrid {
 
   // Indices of the points at most `radius` from `centre`, ascending.
   std::vector<int> within(const Eigen::Vector2d& centre, double radius) const;
+  // The same into `found` (cleared first), so that a caller asking many times reuses it.
+  void within(const Eigen::Vector2d& centre, double radius, std::vector<int>& found) const;
 
  private:
   int column(double x) const;
@@ -20,6 +22,7 @@ class KeypointGrid {
   std::vector<Eigen::Vector2d> points_;
   double cell_size_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  // corner of cell (0, 0)
+  Eigen::Vector2d far_corner_ = Eigen::Vector2d::Zero();  // the points' largest x and y
   int cols_ = 0, rows_ = 0;
   std::vector<std::vector<int>> cells_;  // row-major
 };

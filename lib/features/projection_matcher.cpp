@@ -30,6 +30,7 @@ std::vector<ProjectionMatch> match_by_projection(const MapPointSet& points,
   const Eigen::Isometry3d T_c_w = T_w_c.inverse();
   // For each keypoint, the best claim so far (point index and distance).
   std::vector<ProjectionMatch> claim(frame.size());
+  std::vector<int> candidates;
 
   for (size_t i = 0; i < points.points_w.size(); ++i) {
     const Eigen::Vector3d p_c = T_c_w * points.points_w[i];
@@ -39,7 +40,8 @@ std::vector<ProjectionMatch> match_by_projection(const MapPointSet& points,
     const uchar* descriptor = points.descriptors.ptr<uchar>(static_cast<int>(i));
 
     int best = std::numeric_limits<int>::max(), second = best, best_keypoint = -1;
-    for (int k : grid.within(uv, radius)) {
+    grid.within(uv, radius, candidates);
+    for (int k : candidates) {
       if (!points.octaves.empty() && std::abs(frame.keypoints[k].octave - points.octaves[i]) >
                                          settings.projection_octave_window) {
         continue;
