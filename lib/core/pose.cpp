@@ -29,7 +29,8 @@ Eigen::Isometry3d orthonormalised(const Eigen::Isometry3d& T) {
   Eigen::Isometry3d out = T;
   // The polar decomposition's rotation U V^T, the nearest one. (Isometry3d::rotation() would
   // not do: for an isometry Eigen returns linear() unchanged.)
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(T.linear(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(T.linear(),
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d V = svd.matrixV();
   if ((svd.matrixU() * V.transpose()).determinant() < 0) V.col(2) = -V.col(2);
   out.linear() = svd.matrixU() * V.transpose();

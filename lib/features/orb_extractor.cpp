@@ -71,7 +71,8 @@ FrameFeatures extract_orb(const cv::Mat& image, const Camera& camera, const OrbS
     throw std::invalid_argument("extract_orb: edge_threshold smaller than the patches it guards");
   }
   FrameFeatures features;
-  features.pyramid = build_pyramid(equivalent_grey(image), settings.pyramid_levels, settings.scale_factor);
+  features.pyramid =
+      build_pyramid(equivalent_grey(image), settings.pyramid_levels, settings.scale_factor);
   const ImagePyramid& pyramid = features.pyramid;
   const std::vector<int> quota =
       features_per_level(settings.num_features, pyramid.size(), settings.scale_factor);

@@ -27,11 +27,12 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
       // The window code reads the feature pyramid (SPEC: "each pyramid level"), unless the
       // keyframe settings ask for other levels than ORB's.
       const ImagePyramid& grey = out.features.pyramid;
-      out.window_code = fits(grey, pattern)
-                            ? encode_windows(grey, pattern)
-                            : encode_windows(build_pyramid(grey.levels[0], settings.keyframes.pyramid_levels,
-                                                           settings.keyframes.scale_factor),
-                                             pattern);
+      out.window_code =
+          fits(grey, pattern)
+              ? encode_windows(grey, pattern)
+              : encode_windows(build_pyramid(grey.levels[0], settings.keyframes.pyramid_levels,
+                                             settings.keyframes.scale_factor),
+                               pattern);
       out.window_code_ms = watch.lap();
     } catch (...) {
       errors[size_t(k)] = std::current_exception();

@@ -84,7 +84,9 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
           std::isnan(qv0.z()))
         continue;
       const float max_step = static_cast<float>(max_depth_ratio) * q.z();
-      const auto too_far = [&](const Eigen::Vector3f& p) { return std::abs(p.z() - q.z()) > max_step; };
+      const auto too_far = [&](const Eigen::Vector3f& p) {
+        return std::abs(p.z() - q.z()) > max_step;
+      };
       if (too_far(qu) || too_far(qv) || too_far(qu0) || too_far(qv0)) continue;
       const Eigen::Vector3f n = (qu - qu0).cross(qv - qv0);
       if (n.squaredNorm() > 0) s.normals[s.index(u, v)] = n.normalized();

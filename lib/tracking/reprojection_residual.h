@@ -70,9 +70,8 @@ class ReprojectionResidual : public ceres::SizedCostFunction<kDim, 4, 3> {
       const Eigen::Vector3d& p = p_w_;
       Eigen::Matrix3d minus_p_cross;
       minus_p_cross << 0, p.z(), -p.y(), -p.z(), 0, p.x(), p.y(), -p.x(), 0;
-      d_rot.leftCols<3>() = 2 * w * minus_p_cross +
-                            2 * (v.dot(p) * Eigen::Matrix3d::Identity() + v * p.transpose() -
-                                 2 * p * v.transpose());
+      d_rot.leftCols<3>() = 2 * w * minus_p_cross + 2 * (v.dot(p) * Eigen::Matrix3d::Identity() +
+                                                         v * p.transpose() - 2 * p * v.transpose());
       d_rot.col(3) = 2 * v_x_p;
       Eigen::Map<Jacobian<4>>{d_q} = d_p * d_rot;
     }

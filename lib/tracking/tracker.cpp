@@ -4,11 +4,11 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/pose.h"
+#include "core/stopwatch.h"
 #include "features/descriptor_matcher.h"
 #include "features/projection_matcher.h"
 #include "keyframes/keyframe_rule.h"
-#include "core/pose.h"
-#include "core/stopwatch.h"
 #include "tracking/failure_check.h"
 #include "tracking/icp_svd_ransac.h"
 #include "tracking/motion_model.h"
@@ -274,8 +274,7 @@ void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
                             frame.keypoint_depths[size_t(m.keypoint)],
                             frame.features.pyramid.scales[size_t(kp.octave)]});
   }
-  const PoseRefinement refined =
-      motion_only_ba(observations, camera_, estimate.T_w_c, ba);
+  const PoseRefinement refined = motion_only_ba(observations, camera_, estimate.T_w_c, ba);
   if (!refined.ok) return;  // the solver's estimate stands (dense alignment needs no points)
   record.refined = true;
   estimate.T_w_c = refined.T_w_c;

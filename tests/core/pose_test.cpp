@@ -11,7 +11,8 @@ TEST(Pose, OrthonormalisedProjectsADriftedRotationBackOntoSO3) {
   T.linear() = 1.001 * R;  // what rounding drift in long chains of products looks like, enlarged
   T.translation() = Eigen::Vector3d(1, -2, 0.5);
   const Eigen::Isometry3d fixed = orthonormalised(T);
-  EXPECT_LT((fixed.linear().transpose() * fixed.linear() - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  EXPECT_LT((fixed.linear().transpose() * fixed.linear() - Eigen::Matrix3d::Identity()).norm(),
+            1e-12);
   EXPECT_LT((fixed.linear() - R).norm(), 1e-12);
   EXPECT_EQ(fixed.translation(), T.translation());
 }

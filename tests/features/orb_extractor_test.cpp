@@ -100,9 +100,12 @@ TEST(OrbExtractor, SpreadingBoundsTheShareOfAnyImageCell) {
   constexpr int kFrames = 5;
   for (int i = 0; i < kFrames; ++i) {
     const cv::Mat image = fr2_frame(folder, size_t(10 * i));
-    const double spread = largest_cell_share(extract_orb(image, Camera::freiburg2(), OrbSettings{}).keypoints, 16, 12);
-    const double best = largest_cell_share(extract_orb(image, Camera::freiburg2(), paper).keypoints, 16, 12);
-    std::printf("frame %d: largest share of a 16x12 cell: spread %.3f, best-M %.3f\n", 10 * i, spread, best);
+    const double spread = largest_cell_share(
+        extract_orb(image, Camera::freiburg2(), OrbSettings{}).keypoints, 16, 12);
+    const double best =
+        largest_cell_share(extract_orb(image, Camera::freiburg2(), paper).keypoints, 16, 12);
+    std::printf("frame %d: largest share of a 16x12 cell: spread %.3f, best-M %.3f\n", 10 * i,
+                spread, best);
     spread_sum += spread, best_sum += best, spread_max = std::max(spread_max, spread);
   }
   // 192 cells of 40 px: an even spread would be 0.005. Measured: spread 0.059-0.080 (mean

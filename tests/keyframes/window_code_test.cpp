@@ -13,8 +13,8 @@ namespace {
 // A frame's code as the pipeline makes it: from the pyramid of its equivalent grey.
 WindowCode encode(const cv::Mat& bgr, const WindowPattern& pattern) {
   const KeyframeSettings settings;
-  return encode_windows(build_pyramid(equivalent_grey(bgr), settings.pyramid_levels, settings.scale_factor),
-                        pattern);
+  return encode_windows(
+      build_pyramid(equivalent_grey(bgr), settings.pyramid_levels, settings.scale_factor), pattern);
 }
 
 cv::Mat two_halves(int boundary_x) {

@@ -4,8 +4,8 @@
 #include <omp.h>
 
 #include <cmath>
-#include <random>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "core/pose.h"
@@ -207,8 +207,9 @@ Eigen::Vector3d mean_rotation_bias_deg(const PointToPlaneSettings& settings) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   constexpr int kDraws = 6;
   for (uint32_t seed = 1; seed <= kDraws; ++seed) {
-    const DenseAlignment a = point_to_plane(with_noise(v.prev, 2 * seed), with_noise(v.prev, 2 * seed + 1),
-                                            v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+    const DenseAlignment a =
+        point_to_plane(with_noise(v.prev, 2 * seed), with_noise(v.prev, 2 * seed + 1), v.cam,
+                       Eigen::Isometry3d::Identity(), cv::Rect(), settings);
     const Eigen::AngleAxisd r(a.T_prev_curr.linear());
     sum += r.angle() * r.axis() / kDeg;
   }

@@ -20,8 +20,8 @@ struct ResidualOnly {
 template <int kDim>
 void expect_jacobians_match_numeric(const Eigen::Quaterniond& q_c_w, const Eigen::Vector3d& t_c_w) {
   const ResidualIntrinsics k{520.9, 521.0, 325.1, 249.7, 40.0};
-  const ReprojectionResidual<kDim> analytic(Eigen::Vector3d(0.4, -0.3, 2.1), Eigen::Vector2d(300, 260),
-                                            2.05, 1.44, k);
+  const ReprojectionResidual<kDim> analytic(Eigen::Vector3d(0.4, -0.3, 2.1),
+                                            Eigen::Vector2d(300, 260), 2.05, 1.44, k);
   ceres::NumericDiffCostFunction<ResidualOnly<kDim>, ceres::CENTRAL, kDim, 4, 3> numeric(
       new ResidualOnly<kDim>{&analytic});
   const double q[4] = {q_c_w.x(), q_c_w.y(), q_c_w.z(), q_c_w.w()};
@@ -32,8 +32,10 @@ void expect_jacobians_match_numeric(const Eigen::Quaterniond& q_c_w, const Eigen
   ASSERT_TRUE(analytic.Evaluate(parameters, r_a, jacobians_a));
   ASSERT_TRUE(numeric.Evaluate(parameters, r_n, jacobians_n));
   for (int i = 0; i < kDim; ++i) EXPECT_DOUBLE_EQ(r_a[i], r_n[i]);
-  for (int i = 0; i < kDim * 4; ++i) EXPECT_NEAR(dq_a[i], dq_n[i], 1e-5 * (1 + std::abs(dq_n[i]))) << i;
-  for (int i = 0; i < kDim * 3; ++i) EXPECT_NEAR(dt_a[i], dt_n[i], 1e-5 * (1 + std::abs(dt_n[i]))) << i;
+  for (int i = 0; i < kDim * 4; ++i)
+    EXPECT_NEAR(dq_a[i], dq_n[i], 1e-5 * (1 + std::abs(dq_n[i]))) << i;
+  for (int i = 0; i < kDim * 3; ++i)
+    EXPECT_NEAR(dt_a[i], dt_n[i], 1e-5 * (1 + std::abs(dt_n[i]))) << i;
 }
 
 TEST(ReprojectionResidual, AnalyticJacobiansEqualNumericDifferentiation) {
@@ -46,7 +48,8 @@ TEST(ReprojectionResidual, AnalyticJacobiansEqualNumericDifferentiation) {
 
 TEST(ReprojectionResidual, PointBehindTheCameraHasNoResidual) {
   const ResidualIntrinsics k{520.9, 521.0, 325.1, 249.7, 40.0};
-  const ReprojectionResidual<2> residual(Eigen::Vector3d(0, 0, -1), Eigen::Vector2d(300, 260), 0, 1, k);
+  const ReprojectionResidual<2> residual(Eigen::Vector3d(0, 0, -1), Eigen::Vector2d(300, 260), 0, 1,
+                                         k);
   const double q[4] = {0, 0, 0, 1}, t[3] = {0, 0, 0};
   const double* parameters[] = {q, t};
   double r[2];
