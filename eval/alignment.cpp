@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <stdexcept>
 
+#include "core/enum_names.h"
+
 namespace slamkit::eval {
 
 Eigen::Isometry3d Alignment::apply(const Eigen::Isometry3d& T_w_c) const {
@@ -49,27 +51,18 @@ Alignment align(const std::vector<Eigen::Isometry3d>& est, const std::vector<Eig
   return a;
 }
 
-std::string to_string(AlignMethod method) {
-  switch (method) {
-    case AlignMethod::kSe3:
-      return "se3";
-    case AlignMethod::kSim3:
-      return "sim3";
-    case AlignMethod::kTranslation:
-      return "translation";
-    case AlignMethod::kNone:
-      return "none";
-  }
-  return "none";
-}
+namespace {
+constexpr EnumNames<AlignMethod, 4> kAlignNames = {{{AlignMethod::kSe3, "se3"},
+                                                    {AlignMethod::kSim3, "sim3"},
+                                                    {AlignMethod::kTranslation, "translation"},
+                                                    {AlignMethod::kNone, "none"}}};
+}  // namespace
+
+std::string to_string(AlignMethod method) { return name_of(kAlignNames, method); }
 
 AlignMethod parse_align_method(const std::string& text) {
-  if (text == "se3") return AlignMethod::kSe3;
-  if (text == "sim3") return AlignMethod::kSim3;
-  if (text == "translation") return AlignMethod::kTranslation;
-  if (text == "none") return AlignMethod::kNone;
-  throw std::invalid_argument("unknown alignment '" + text +
-                              "' (use se3, sim3, translation or none)");
+  if (const auto method = value_named(kAlignNames, text)) return *method;
+  throw std::invalid_argument("unknown alignment '" + text + "' (use " + choices(kAlignNames) + ")");
 }
 
 }  // namespace slamkit::eval

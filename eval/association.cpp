@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 
 namespace slamkit::eval {
@@ -39,14 +40,17 @@ void require_enough_pairs(size_t pair_count, const Trajectory& gt, const Traject
   throw_input_error(est_name, text);
 }
 
-std::string to_string(AssociationMethod method) {
-  return method == AssociationMethod::kTum ? "tum" : "evo";
-}
+namespace {
+constexpr EnumNames<AssociationMethod, 2> kAssociationNames = {
+    {{AssociationMethod::kTum, "tum"}, {AssociationMethod::kEvo, "evo"}}};
+}  // namespace
+
+std::string to_string(AssociationMethod method) { return name_of(kAssociationNames, method); }
 
 AssociationMethod parse_association_method(const std::string& text) {
-  if (text == "tum") return AssociationMethod::kTum;
-  if (text == "evo") return AssociationMethod::kEvo;
-  throw std::invalid_argument("unknown association '" + text + "' (use tum or evo)");
+  if (const auto method = value_named(kAssociationNames, text)) return *method;
+  throw std::invalid_argument("unknown association '" + text + "' (use " +
+                              choices(kAssociationNames) + ")");
 }
 
 }  // namespace slamkit::eval

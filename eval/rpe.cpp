@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 #include "core/pose.h"
 #include "eval/statistics.h"
@@ -213,36 +214,29 @@ RpeResult compute_rpe(const Trajectory& gt, const Trajectory& est,
              : rpe_evo(gt, est, associated, options, est_name);
 }
 
-std::string to_string(DeltaUnit unit) {
-  switch (unit) {
-    case DeltaUnit::kSeconds:
-      return "s";
-    case DeltaUnit::kFrames:
-      return "f";
-    case DeltaUnit::kMetres:
-      return "m";
-    case DeltaUnit::kDegrees:
-      return "deg";
-  }
-  return "s";
-}
+namespace {
+constexpr EnumNames<DeltaUnit, 4> kDeltaUnitNames = {{{DeltaUnit::kSeconds, "s"},
+                                                      {DeltaUnit::kFrames, "f"},
+                                                      {DeltaUnit::kMetres, "m"},
+                                                      {DeltaUnit::kDegrees, "deg"}}};
+constexpr EnumNames<RpeConvention, 2> kConventionNames = {
+    {{RpeConvention::kTum, "tum"}, {RpeConvention::kEvo, "evo"}}};
+}  // namespace
+
+std::string to_string(DeltaUnit unit) { return name_of(kDeltaUnitNames, unit); }
 
 DeltaUnit parse_delta_unit(const std::string& text) {
-  if (text == "s") return DeltaUnit::kSeconds;
-  if (text == "f") return DeltaUnit::kFrames;
-  if (text == "m") return DeltaUnit::kMetres;
-  if (text == "deg") return DeltaUnit::kDegrees;
-  throw std::invalid_argument("unknown delta unit '" + text + "' (use s, f, m or deg)");
+  if (const auto unit = value_named(kDeltaUnitNames, text)) return *unit;
+  throw std::invalid_argument("unknown delta unit '" + text + "' (use " +
+                              choices(kDeltaUnitNames) + ")");
 }
 
-std::string to_string(RpeConvention convention) {
-  return convention == RpeConvention::kTum ? "tum" : "evo";
-}
+std::string to_string(RpeConvention convention) { return name_of(kConventionNames, convention); }
 
 RpeConvention parse_rpe_convention(const std::string& text) {
-  if (text == "tum") return RpeConvention::kTum;
-  if (text == "evo") return RpeConvention::kEvo;
-  throw std::invalid_argument("unknown RPE convention '" + text + "' (use tum or evo)");
+  if (const auto convention = value_named(kConventionNames, text)) return *convention;
+  throw std::invalid_argument("unknown RPE convention '" + text + "' (use " +
+                              choices(kConventionNames) + ")");
 }
 
 }  // namespace slamkit::eval

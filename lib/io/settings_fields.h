@@ -4,8 +4,8 @@
 // A visitor provides: field(name, value&) for numbers, booleans and enums, and
 // section(name, callable) for nested structs.
 #include <string>
-#include <vector>
 
+#include "core/enum_names.h"
 #include "core/settings/settings.h"
 
 namespace slamkit {
@@ -130,24 +130,11 @@ void visit_fields(Settings& s, V& v) {
 }
 
 // Names of enum values in settings files.
-inline const char* enum_name(FastType t) { return t == FastType::kFast12 ? "fast12" : "fast9"; }
-inline const char* enum_name(MatcherBackend b) {
-  return b == MatcherBackend::kFlannLsh ? "flann_lsh" : "brute_force";
-}
-inline std::vector<FastType> enum_values(FastType) {
-  return {FastType::kFast12, FastType::kFast9};
-}
-inline std::vector<MatcherBackend> enum_values(MatcherBackend) {
-  return {MatcherBackend::kFlannLsh, MatcherBackend::kBruteForce};
-}
-template <class E>
-bool enum_from_name(const std::string& name, E& out) {
-  for (E candidate : enum_values(out))
-    if (name == enum_name(candidate)) {
-      out = candidate;
-      return true;
-    }
-  return false;
-}
+inline constexpr EnumNames<FastType, 2> kFastTypeNames = {
+    {{FastType::kFast9, "fast9"}, {FastType::kFast12, "fast12"}}};
+inline constexpr EnumNames<MatcherBackend, 2> kMatcherBackendNames = {
+    {{MatcherBackend::kFlannLsh, "flann_lsh"}, {MatcherBackend::kBruteForce, "brute_force"}}};
+inline const auto& enum_names(FastType) { return kFastTypeNames; }
+inline const auto& enum_names(MatcherBackend) { return kMatcherBackendNames; }
 
 }  // namespace slamkit

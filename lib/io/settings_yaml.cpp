@@ -21,7 +21,7 @@ class YamlWriter {
   void field(const char* name, T& value) {
     out_ << YAML::Key << name << YAML::Value;
     if constexpr (std::is_enum_v<T>) {
-      out_ << enum_name(value);
+      out_ << name_of(enum_names(value), value);
     } else if constexpr (std::is_floating_point_v<T>) {
       out_ << format_exact(value);
     } else {
@@ -50,8 +50,11 @@ class YamlReader {
     const YAML::Node child = take(name);
     if (!child) return;
     if constexpr (std::is_enum_v<T>) {
-      if (!enum_from_name(child.as<std::string>(), value))
-        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name);
+      const auto named = value_named(enum_names(value), child.as<std::string>());
+      if (!named)
+        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name +
+                        " (" + choices(enum_names(value)) + ")");
+      value = *named;
     } else {
       try {
         value = child.as<T>();

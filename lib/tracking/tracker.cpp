@@ -17,20 +17,6 @@
 
 namespace slamkit {
 
-const char* solver_name(PoseSolver solver) {
-  switch (solver) {
-    case PoseSolver::kFirstFrame:
-      return "first";
-    case PoseSolver::kSvdRansac:
-      return "svd_ransac";
-    case PoseSolver::kPointToPlane:
-      return "point_to_plane";
-    case PoseSolver::kMotionModel:
-      return "motion_model";
-  }
-  return "?";
-}
-
 Tracker::Tracker(const Camera& camera, const Settings& settings)
     : camera_(camera), settings_(settings) {
   if (!camera_.distortion.is_zero()) {
