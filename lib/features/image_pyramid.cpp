@@ -1,7 +1,8 @@
 #include "features/image_pyramid.h"
 
+#include "features/area_downscale.h"
+
 #include <cmath>
-#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 namespace slamkit {
@@ -19,8 +20,8 @@ ImagePyramid build_pyramid(const cv::Mat& grey, int num_levels, double scale_fac
   for (int l = 1; l < num_levels; ++l) {
     const double scale = std::pow(scale_factor, l);
     const cv::Size size(cvRound(grey.cols / scale), cvRound(grey.rows / scale));
-    // From level 0 each time (not from level l-1): INTER_AREA then averages the true footprint.
-    cv::resize(grey, pyramid.levels[l], size, 0, 0, cv::INTER_AREA);
+    // From level 0 each time (not from level l-1): the area average then covers the true footprint.
+    pyramid.levels[l] = area_downscale(grey, size);
     pyramid.scales[l] = scale;
   }
   return pyramid;

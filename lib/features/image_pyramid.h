@@ -17,7 +17,8 @@ struct ImagePyramid {
   cv::Point2f from_level0(const cv::Point2f& p, int level) const;
 };
 
-// Level l is round(size / scale_factor^l), each resized from level 0 with INTER_AREA (paper).
+// Level l is round(size / scale_factor^l), each area-averaged from level 0 (the paper's
+// INTER_AREA, see area_downscale.h).
 ImagePyramid build_pyramid(const cv::Mat& grey, int num_levels, double scale_factor);
 
 }  // namespace slamkit

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
 
 namespace slamkit {
 namespace {
 
-bool stronger(const Corner& a, const Corner& b) {
+inline bool stronger(const Corner& a, const Corner& b) {
   if (a.response != b.response) return a.response > b.response;
   return a.pt.y != b.pt.y ? a.pt.y < b.pt.y : a.pt.x < b.pt.x;
 }
@@ -18,25 +21,48 @@ bool stronger(const Corner& a, const Corner& b) {
 
 std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv::Point>& points,
                                        int block_size) {
-  // OpenCV does the image filtering; the sparse sums below are ours. spatialGradient gives
-  // both 3x3 Sobel derivatives (same values, same BORDER_REFLECT_101) in one pass, ~5x faster
-  // than two cv::Sobel calls.
-  cv::Mat dx, dy;
+  if (block_size < 1 || block_size > kMaxShiTomasiBlock || block_size % 2 == 0) {
+    throw std::invalid_argument("shi_tomasi_response: the block size must be odd, 1 to " +
+                                std::to_string(kMaxShiTomasiBlock));
+  }
+  // OpenCV does the image filtering: spatialGradient gives both 3x3 Sobel derivatives (the
+  // values and BORDER_REFLECT_101 of cv::Sobel) in one pass. It writes into views of buffers 8
+  // columns wider, so the 8-lane loads below never leave the buffer.
+  constexpr int kLanes = 8;
+  cv::Mat dx_buffer(grey.rows, grey.cols + kLanes, CV_16S);
+  cv::Mat dy_buffer(grey.rows, grey.cols + kLanes, CV_16S);
+  cv::Mat dx = dx_buffer.colRange(0, grey.cols), dy = dy_buffer.colRange(0, grey.cols);
   cv::spatialGradient(grey, dx, dy, 3);
+  if (dx.data != dx_buffer.data || dy.data != dy_buffer.data) {
+    throw std::logic_error("shi_tomasi_response: cv::spatialGradient reallocated its output");
+  }
+  // The sparse window sums are ours (SPEC: corner response vectorised), on OpenCV's portable
+  // SIMD: 8 derivatives per load, lanes past the window masked off. Integer sums, so the result
+  // is exact whatever the instruction set.
+  const int chunks = (block_size + kLanes - 1) / kLanes;
+  std::vector<cv::v_int16x8> masks(chunks);
+  for (int c = 0; c < chunks; ++c) {
+    short lanes[kLanes];
+    for (int i = 0; i < kLanes; ++i) lanes[i] = c * kLanes + i < block_size ? -1 : 0;
+    masks[c] = cv::v_load(lanes);
+  }
   // cv::cornerMinEigenVal scales the derivatives by 1 / (4 * block_size * 255).
   const double scale = 1.0 / (4.0 * block_size * 255.0);
   const int r = block_size / 2;
   std::vector<float> responses(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    int64_t xx = 0, yy = 0, xy = 0;
+    cv::v_int32x4 xx = cv::v_setzero_s32(), yy = xx, xy = xx;
     for (int v = points[i].y - r; v <= points[i].y + r; ++v) {
-      const short* gx = dx.ptr<short>(v);
-      const short* gy = dy.ptr<short>(v);
-      for (int u = points[i].x - r; u <= points[i].x + r; ++u) {
-        xx += gx[u] * gx[u], yy += gy[u] * gy[u], xy += gx[u] * gy[u];
+      const short* gx = dx.ptr<short>(v) + points[i].x - r;
+      const short* gy = dy.ptr<short>(v) + points[i].x - r;
+      for (int c = 0; c < chunks; ++c) {
+        const cv::v_int16x8 a = cv::v_load(gx + c * kLanes) & masks[c];
+        const cv::v_int16x8 b = cv::v_load(gy + c * kLanes) & masks[c];
+        xx += cv::v_dotprod(a, a), yy += cv::v_dotprod(b, b), xy += cv::v_dotprod(a, b);
       }
     }
-    const double a = 0.5 * xx, c = 0.5 * yy, b = static_cast<double>(xy);
+    const double a = 0.5 * cv::v_reduce_sum(xx), c = 0.5 * cv::v_reduce_sum(yy);
+    const double b = cv::v_reduce_sum(xy);
     responses[i] =
         static_cast<float>(((a + c) - std::sqrt((a - c) * (a - c) + b * b)) * scale * scale);
   }
@@ -45,27 +71,35 @@ std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv
 
 std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates,
                                         const std::vector<float>& responses, cv::Size image_size) {
-  // Candidate responses on a map; non-candidates hold -inf so they never suppress anything.
-  cv::Mat scores(image_size, CV_32F, cv::Scalar(-std::numeric_limits<float>::infinity()));
+  constexpr float kNone = -std::numeric_limits<float>::infinity();  // never suppresses anything
+  // Candidate responses on a map. Filling a fresh full-size map took longer than the suppression
+  // itself, so each thread keeps one, all kNone between calls (reset below).
+  thread_local cv::Mat map;
+  if (map.rows < image_size.height || map.cols < image_size.width) {
+    map.create(std::max(map.rows, image_size.height), std::max(map.cols, image_size.width),
+               CV_32F);
+    map.setTo(kNone);
+  }
+  cv::Mat scores = map(cv::Rect(cv::Point(0, 0), image_size));
   for (size_t i = 0; i < candidates.size(); ++i) scores.at<float>(candidates[i]) = responses[i];
   std::vector<Corner> kept;
   for (const cv::Point& p : candidates) {
     const float r = scores.at<float>(p);
     bool is_max = true;
     for (int dy = -1; dy <= 1 && is_max; ++dy) {
+      const int y = p.y + dy;
+      if (y < 0 || y >= scores.rows) continue;
+      const float* row = scores.ptr<float>(y);
       for (int dx = -1; dx <= 1 && is_max; ++dx) {
-        const cv::Point q(p.x + dx, p.y + dy);
-        if ((dx == 0 && dy == 0) || q.x < 0 || q.y < 0 || q.x >= scores.cols ||
-            q.y >= scores.rows) {
-          continue;
-        }
-        const float s = scores.at<float>(q);
+        const int x = p.x + dx;
+        if ((dx == 0 && dy == 0) || x < 0 || x >= scores.cols) continue;
         const bool earlier = dy < 0 || (dy == 0 && dx < 0);
-        if (s > r || (s == r && earlier)) is_max = false;
+        if (row[x] > r || (row[x] == r && earlier)) is_max = false;
       }
     }
     if (is_max) kept.push_back({p, r});
   }
+  for (const cv::Point& p : candidates) scores.at<float>(p) = kNone;
   std::sort(kept.begin(), kept.end(), stronger);
   return kept;
 }

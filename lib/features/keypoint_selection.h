@@ -15,7 +15,9 @@ struct Corner {
 // Shi-Tomasi response (smaller eigenvalue of the structure tensor of 3x3 Sobel derivatives over
 // block_size x block_size) at each point, scaled as cv::cornerMinEigenVal, which computes it at
 // every pixel; here only the candidates pay (a few thousand of 300,000 pixels). Points must lie
-// at least block_size / 2 + 1 px inside the image.
+// at least block_size / 2 + 1 px inside the image; block_size is odd and at most
+// kMaxShiTomasiBlock (the 32-bit window sums would overflow beyond).
+constexpr int kMaxShiTomasiBlock = 31;
 std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv::Point>& points,
                                        int block_size);
 

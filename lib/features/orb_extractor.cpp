@@ -32,14 +32,20 @@ std::vector<Corner> detect_level(const cv::Mat& level, int quota, const OrbSetti
   const CellGrid grid = CellGrid::over(region, settings.cell_size);
   std::vector<cv::Point> candidates = strong;
   if (settings.spread_over_image) {
-    // Low-texture cells get a second chance at the lower threshold (ORB-SLAM2's retry).
-    std::vector<int> per_cell(grid.count(), 0);
-    for (const cv::Point& p : strong) ++per_cell[grid.index_of(p)];
-    for (int c = 0; c < grid.count(); ++c) {
-      if (per_cell[c] > 0) continue;
-      const std::vector<cv::Point> weak =
-          detect_fast(level, grid.cell(c), settings.fast_min_threshold, settings.fast_type);
+    // Low-texture cells get a second chance at the lower threshold (ORB-SLAM2's retry). The
+    // segment test reads only the circle around a pixel, so one FAST call over a run of empty
+    // cells in a grid row finds what a call per cell would, with less overhead per call.
+    std::vector<bool> empty(grid.count(), true);
+    for (const cv::Point& p : strong) empty[grid.index_of(p)] = false;
+    for (int c = 0; c < grid.count();) {
+      if (!empty[c]) { ++c; continue; }
+      const int row_end = (c / grid.cols + 1) * grid.cols;
+      int last = c;
+      while (last + 1 < row_end && empty[last + 1]) ++last;
+      const std::vector<cv::Point> weak = detect_fast(level, grid.cell(c) | grid.cell(last),
+                                                      settings.fast_min_threshold, settings.fast_type);
       candidates.insert(candidates.end(), weak.begin(), weak.end());
+      c = last + 1;
     }
   }
   // Suppression over all candidates, so a weak corner cannot sit next to a strong one.

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <numeric>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
 namespace slamkit {
 namespace {
@@ -13,6 +15,28 @@ TEST(KeypointSelection, LevelQuotasFollowAreaAndSumToTotal) {
   EXPECT_EQ(n[0], 398);
   EXPECT_EQ(n[1], 276);
   EXPECT_EQ(n[2], 192);
+}
+
+TEST(KeypointSelection, ShiTomasiEqualsOpenCvAtEveryBlockSize) {
+  // Block sizes of one, two and four 8-lane chunks, up to the image border the contract allows.
+  cv::Mat noise(60, 70, CV_8UC1);
+  cv::RNG rng(5);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(noise, noise, {5, 5}, 1.0);
+  for (const int block : {3, 7, 9, 31}) {
+    cv::Mat dense;
+    cv::cornerMinEigenVal(noise, dense, block, 3);
+    const int r = block / 2 + 1;
+    const std::vector<cv::Point> points = {
+        {r, r}, {noise.cols - 1 - r, noise.rows - 1 - r}, {35, 30}, {r, noise.rows - 1 - r}};
+    const std::vector<float> sparse = shi_tomasi_response(noise, points, block);
+    for (size_t i = 0; i < points.size(); ++i) {
+      const float expected = dense.at<float>(points[i]);
+      EXPECT_NEAR(sparse[i], expected, 1e-4 * expected + 1e-7) << block << " at " << points[i];
+    }
+  }
+  EXPECT_THROW(shi_tomasi_response(noise, {{20, 20}}, 8), std::invalid_argument);
+  EXPECT_THROW(shi_tomasi_response(noise, {{20, 20}}, 33), std::invalid_argument);
 }
 
 TEST(KeypointSelection, NonMaximumSuppressionKeepsLocalPeaks) {
