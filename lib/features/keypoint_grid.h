@@ -16,15 +16,22 @@ class KeypointGrid {
   void within(const Eigen::Vector2d& centre, double radius, std::vector<int>& found) const;
 
  private:
+  struct Entry {  // a point as the search reads it: position and index side by side
+    double x, y;
+    int index;
+  };
+
   int column(double x) const;
   int row(double y) const;
 
-  std::vector<Eigen::Vector2d> points_;
   double cell_size_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  // corner of cell (0, 0)
   Eigen::Vector2d far_corner_ = Eigen::Vector2d::Zero();  // the points' largest x and y
   int cols_ = 0, rows_ = 0;
-  std::vector<std::vector<int>> cells_;  // row-major
+  // The points ordered by cell (row-major), so the cells a search box spans in one row are
+  // one contiguous stretch: cell c holds entries_[cell_start_[c] .. cell_start_[c + 1]).
+  std::vector<Entry> entries_;
+  std::vector<int> cell_start_;
 };
 
 }  // namespace slamkit

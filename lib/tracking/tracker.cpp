@@ -6,6 +6,7 @@
 
 #include "core/pose.h"
 #include "core/stopwatch.h"
+#include "features/descriptor.h"
 #include "features/descriptor_matcher.h"
 #include "features/projection_matcher.h"
 #include "keyframes/keyframe_rule.h"
@@ -84,12 +85,12 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
                                                      const Eigen::Isometry3d& T_w_c_guess) const {
   const std::vector<int> ids = map_.local_point_ids(size_t(settings_.tracking.local_map_keyframes));
   MapPointSet points;
-  points.descriptors.create(int(ids.size()), 32, CV_8U);
+  points.descriptors.create(int(ids.size()), kDescriptorBytes, CV_8U);
   for (size_t k = 0; k < ids.size(); ++k) {
     const MapPoint& p = map_.point(ids[k]);
     points.points_w.push_back(p.p_w);
     points.octaves.push_back(p.octave);
-    p.descriptor.copyTo(points.descriptors.row(int(k)));
+    std::copy_n(p.descriptor.ptr<uchar>(), kDescriptorBytes, points.descriptors.ptr<uchar>(int(k)));
   }
   const KeypointGrid grid(frame.features.undistorted, settings_.matcher.grid_cell_size);
   MatcherSettings matcher = settings_.matcher;
