@@ -1,12 +1,12 @@
 #include "tracking/motion_only_ba.h"
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 
+#include "tracking/motion_ba_objective.h"
 #include "tracking/reprojection_residual.h"
 
 namespace slamkit {
@@ -14,62 +14,34 @@ namespace {
 
 constexpr int kMinObservations = 3;  // a pose has 6 dof; fewer points cannot fix it
 
-// Pose blocks of T_c_w: the point transform the projection needs, as ORB-SLAM2 optimises.
-struct PoseBlocks {
-  double q[4];  // Eigen order x, y, z, w
-  double t[3];
-};
-
-PoseBlocks to_blocks(const Eigen::Isometry3d& T_w_c) {
-  const Eigen::Isometry3d T_c_w = T_w_c.inverse();
-  const Eigen::Quaterniond q = Eigen::Quaterniond(T_c_w.linear()).normalized();
-  return {{q.x(), q.y(), q.z(), q.w()},
-          {T_c_w.translation().x(), T_c_w.translation().y(), T_c_w.translation().z()}};
-}
-
-Eigen::Isometry3d from_blocks(const PoseBlocks& b) {
-  Eigen::Isometry3d T_c_w = Eigen::Isometry3d::Identity();
-  T_c_w.linear() = Eigen::Quaterniond(b.q[3], b.q[0], b.q[1], b.q[2]).normalized().matrix();
-  T_c_w.translation() = Eigen::Vector3d(b.t[0], b.t[1], b.t[2]);
-  return T_c_w.inverse();
-}
-
-// The chi-square statistic of one observation; infinite behind the camera.
-double chi2(const ceres::CostFunction& residual, const PoseBlocks& pose) {
-  const double* parameters[] = {pose.q, pose.t};
-  double r[3];
-  if (!residual.Evaluate(parameters, r, nullptr)) return std::numeric_limits<double>::infinity();
-  double sum = 0;
-  for (int i = 0; i < residual.num_residuals(); ++i) sum += r[i] * r[i];
-  return sum;
-}
-
 }  // namespace
 
 PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
                               const Camera& camera, const Eigen::Isometry3d& T_w_c_guess,
                               const MotionBaSettings& settings) {
   const int n = static_cast<int>(observations.size());
-  PoseBlocks pose = to_blocks(T_w_c_guess);
+  const Eigen::Isometry3d T_c_w_guess = T_w_c_guess.inverse();
+  Eigen::Matrix3d R_c_w = T_c_w_guess.linear();
+  Eigen::Vector3d t_c_w = T_c_w_guess.translation();
   const ResidualIntrinsics k{camera.fx, camera.fy, camera.cx, camera.cy, settings.virtual_bf};
   // Observations with depth get the disparity residual too (and the 3-dof chi-square test).
-  std::vector<bool> has_depth(n);
-  std::vector<std::unique_ptr<ceres::CostFunction>> residuals(n);
-  for (int i = 0; i < n; ++i) {
-    const PointObservation& o = observations[i];
-    has_depth[i] = settings.use_depth && camera.is_valid_depth(o.depth);
-    if (has_depth[i])
-      residuals[i] = std::make_unique<ReprojectionResidual<3>>(o.p_w, o.uv, o.depth, o.sigma, k);
-    else
-      residuals[i] = std::make_unique<ReprojectionResidual<2>>(o.p_w, o.uv, o.depth, o.sigma, k);
+  std::vector<ReprojectionResidual> residuals;
+  residuals.reserve(n);
+  for (const PointObservation& o : observations) {
+    const bool with_depth = settings.use_depth && camera.is_valid_depth(o.depth);
+    residuals.emplace_back(o.p_w, o.uv, with_depth ? o.depth : 0.0, o.sigma, k);
   }
+  const auto chi2_threshold = [&](int i) {
+    return residuals[i].dimension() == 3 ? settings.chi2_3d : settings.chi2_2d;
+  };
 
   // Classifies every observation, outliers included, so that one can come back.
   std::vector<bool> inliers(n);
   auto classify = [&]() {
     int count = 0;
     for (int i = 0; i < n; ++i) {
-      inliers[i] = chi2(*residuals[i], pose) < (has_depth[i] ? settings.chi2_3d : settings.chi2_2d);
+      ReprojectionResidual::Vector r;
+      inliers[i] = residuals[i].evaluate(R_c_w, t_c_w, r) && r.squaredNorm() < chi2_threshold(i);
       count += inliers[i];
     }
     return count;
@@ -78,42 +50,40 @@ PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
   // with all matches as inliers).
   int num_inliers = 0;
   for (int i = 0; i < n; ++i) {
-    inliers[i] = (T_w_c_guess.inverse() * observations[i].p_w).z() > 0;
+    inliers[i] = (T_c_w_guess * observations[i].p_w).z() > 0;
     num_inliers += inliers[i];
   }
 
-  ceres::EigenQuaternionManifold quaternion_manifold;
-  ceres::HuberLoss huber_2d(std::sqrt(settings.chi2_2d)), huber_3d(std::sqrt(settings.chi2_3d));
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = settings.iterations_per_round;
-  options.num_threads = 1;  // determinism
-  options.logging_type = ceres::SILENT;
-
+  // ceres::TinySolver, Ceres' dense Levenberg-Marquardt for a few parameters: one call returns
+  // every residual and the whole Jacobian. The general ceres::Solve took 4-5 ms per frame on
+  // ~700 matches, mostly its per-residual-block bookkeeping. Single-threaded: deterministic.
+  ceres::TinySolver<MotionBaObjective> solver;
+  solver.options.max_num_iterations = settings.iterations_per_round;
   bool solved = true;
   for (int round = 0; round < settings.rounds && num_inliers >= kMinObservations; ++round) {
-    ceres::Problem problem(problem_options);
-    problem.AddParameterBlock(pose.q, 4, &quaternion_manifold);
-    problem.AddParameterBlock(pose.t, 3);
     const bool robust = round < settings.robust_rounds;
+    std::vector<MotionBaObjective::Term> terms;
     for (int i = 0; i < n; ++i) {
-      if (!inliers[i]) continue;
-      ceres::LossFunction* loss = robust ? (has_depth[i] ? &huber_3d : &huber_2d) : nullptr;
-      problem.AddResidualBlock(residuals[i].get(), loss, pose.q, pose.t);
+      if (inliers[i]) terms.push_back({&residuals[i], robust ? std::sqrt(chi2_threshold(i)) : 0});
     }
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &problem, &summary);
-    solved = summary.IsSolutionUsable();
+    const MotionBaObjective objective(std::move(terms), R_c_w, t_c_w);
+    Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
+    // Stop when the cost changes by less than a millionth of itself (Ceres' default).
+    Eigen::VectorXd r0(objective.NumResiduals());
+    objective(x.data(), r0.data(), nullptr);
+    solver.options.function_tolerance = 1e-6 * r0.squaredNorm();
+    solver.Solve(objective, &x);
+    solved = x.allFinite();
     if (!solved) break;
+    objective.pose_at(x.data(), R_c_w, t_c_w);
     num_inliers = classify();
   }
 
   PoseRefinement result;
-  result.T_w_c = from_blocks(pose);
+  Eigen::Isometry3d T_c_w = Eigen::Isometry3d::Identity();
+  T_c_w.linear() = R_c_w;
+  T_c_w.translation() = t_c_w;
+  result.T_w_c = T_c_w.inverse();
   result.inliers = std::move(inliers);
   result.num_inliers = num_inliers;
   result.ok = solved && num_inliers >= std::max(settings.min_inliers, kMinObservations);

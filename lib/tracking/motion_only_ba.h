@@ -26,8 +26,9 @@ struct PoseRefinement {
   bool ok = false;  // solved, with at least settings.min_inliers inliers
 };
 
-// Refines the camera pose T_w_c from an initial guess. Ceres, single-threaded (so the
-// result is deterministic); Huber kernel with delta = sqrt(chi2 threshold).
+// Refines the camera pose T_w_c from an initial guess: ceres::TinySolver (Levenberg-Marquardt),
+// single-threaded, so the result is deterministic; Huber kernel with delta = sqrt(chi2
+// threshold) in the robust rounds.
 PoseRefinement motion_only_ba(const std::vector<PointObservation>& observations,
                               const Camera& camera, const Eigen::Isometry3d& T_w_c_guess,
                               const MotionBaSettings& settings);
