@@ -69,9 +69,13 @@ std::vector<cv::Point> detect_fast(const cv::Mat& image, const cv::Rect& region,
     if (type == FastType::kFast12 && !passes_fast12(image, p, threshold)) continue;
     corners.push_back(p);
   }
-  std::sort(corners.begin(), corners.end(), [](const cv::Point& a, const cv::Point& b) {
+  // cv::FAST scans row by row, so the order is raster already; sorting is the fallback.
+  const auto raster_less = [](const cv::Point& a, const cv::Point& b) {
     return a.y != b.y ? a.y < b.y : a.x < b.x;
-  });
+  };
+  if (!std::is_sorted(corners.begin(), corners.end(), raster_less)) {
+    std::sort(corners.begin(), corners.end(), raster_less);
+  }
   return corners;
 }
 

@@ -28,12 +28,17 @@ std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv
   // OpenCV does the image filtering: spatialGradient gives both 3x3 Sobel derivatives (the
   // values and BORDER_REFLECT_101 of cv::Sobel) in one pass. It writes into views of buffers 8
   // columns wider, so the 8-lane loads below never leave the buffer.
+  // The buffers stay with the thread: fresh ones cost page faults on every level of every frame.
   constexpr int kLanes = 8;
-  cv::Mat dx_buffer(grey.rows, grey.cols + kLanes, CV_16S);
-  cv::Mat dy_buffer(grey.rows, grey.cols + kLanes, CV_16S);
-  cv::Mat dx = dx_buffer.colRange(0, grey.cols), dy = dy_buffer.colRange(0, grey.cols);
+  thread_local cv::Mat dx_buffer, dy_buffer;
+  if (dx_buffer.rows < grey.rows || dx_buffer.cols < grey.cols + kLanes) {
+    dx_buffer.create(grey.rows, grey.cols + kLanes, CV_16S);
+    dy_buffer.create(grey.rows, grey.cols + kLanes, CV_16S);
+  }
+  cv::Mat dx = dx_buffer(cv::Rect(0, 0, grey.cols, grey.rows));
+  cv::Mat dy = dy_buffer(cv::Rect(0, 0, grey.cols, grey.rows));
   cv::spatialGradient(grey, dx, dy, 3);
-  if (dx.data != dx_buffer.data || dy.data != dy_buffer.data) {
+  if (dx.datastart != dx_buffer.datastart || dy.datastart != dy_buffer.datastart) {
     throw std::logic_error("shi_tomasi_response: cv::spatialGradient reallocated its output");
   }
   // The sparse window sums are ours (SPEC: corner response vectorised), on OpenCV's portable
@@ -100,7 +105,7 @@ std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates
     if (is_max) kept.push_back({p, r});
   }
   for (const cv::Point& p : candidates) scores.at<float>(p) = kNone;
-  std::sort(kept.begin(), kept.end(), stronger);
+  std::sort(kept.begin(), kept.end(), [](const Corner& a, const Corner& b) { return stronger(a, b); });
   return kept;
 }
 

@@ -27,16 +27,22 @@ std::vector<int> disc_half_widths(int radius) {
 float intensity_centroid_angle(const cv::Mat& grey, cv::Point centre, int radius) {
   thread_local std::vector<int> half;  // the disc for the last radius asked, per thread
   if (static_cast<int>(half.size()) != radius + 1) half = disc_half_widths(radius);
-  long m01 = 0, m10 = 0;
-  for (int v = -radius; v <= radius; ++v) {
-    const int w = half[std::abs(v)];
-    const uchar* row = grey.ptr<uchar>(centre.y + v) + centre.x;
-    long row_sum = 0;
+  // Rows v and -v together: m10 takes their sum, m01 their difference (half the passes).
+  int m01 = 0, m10 = 0;  // |m| <= 255 r (2r + 1)^2: 32 bits hold it up to r = 100
+  const uchar* middle = grey.ptr<uchar>(centre.y) + centre.x;
+  for (int u = -radius; u <= radius; ++u) m10 += u * middle[u];
+  const size_t step = grey.step1();
+  for (int v = 1; v <= radius; ++v) {
+    const int w = half[v];
+    const uchar* below = middle + v * step;
+    const uchar* above = middle - v * step;
+    int sum_x = 0, difference = 0;
     for (int u = -w; u <= w; ++u) {
-      row_sum += row[u];
-      m10 += static_cast<long>(u) * row[u];
+      sum_x += u * (below[u] + above[u]);
+      difference += below[u] - above[u];
     }
-    m01 += static_cast<long>(v) * row_sum;
+    m10 += sum_x;
+    m01 += v * difference;
   }
   double degrees = std::atan2(static_cast<double>(m01), static_cast<double>(m10)) * 180.0 / M_PI;
   if (degrees < 0) degrees += 360.0;
