@@ -64,7 +64,6 @@ void KeypointGrid::within(const Eigen::Vector2d& centre, double radius,
       if (dx * dx + dy * dy <= radius2) found.push_back(entries_[e].index);
     }
   }
-  std::sort(found.begin(), found.end());
 }
 
 }  // namespace slamkit

@@ -10,7 +10,8 @@ class KeypointGrid {
   // Takes its own copy of the positions (undistorted keypoints, usually).
   explicit KeypointGrid(std::vector<Eigen::Vector2d> points, double cell_size = 10);
 
-  // Indices of the points at most `radius` from `centre`, ascending.
+  // Indices of the points at most `radius` from `centre`, in grid order (row by row, then by
+  // index within a cell): deterministic, but not sorted, as sorting cost more than the search.
   std::vector<int> within(const Eigen::Vector2d& centre, double radius) const;
   // The same into `found` (cleared first), so that a caller asking many times reuses it.
   void within(const Eigen::Vector2d& centre, double radius, std::vector<int>& found) const;

@@ -1,6 +1,7 @@
 #include "map/map.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace slamkit {
 
@@ -27,13 +28,21 @@ size_t Map::insert_keyframe(Keyframe keyframe, const Camera& camera) {
 }
 
 std::vector<int> Map::local_point_ids(size_t count) const {
-  std::vector<int> ids;
+  // Recent keyframes see recent points, so the ids span a short range: marking them there and
+  // reading the marks in order is cheaper than sorting the ids and removing repeats.
   const size_t first = keyframes_.size() > count ? keyframes_.size() - count : 0;
+  int lowest = std::numeric_limits<int>::max(), highest = -1;
   for (size_t k = first; k < keyframes_.size(); ++k)
     for (int id : keyframes_[k].point_ids)
-      if (id >= 0) ids.push_back(id);
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      if (id >= 0) lowest = std::min(lowest, id), highest = std::max(highest, id);
+  std::vector<int> ids;
+  if (highest < 0) return ids;
+  std::vector<bool> seen(size_t(highest - lowest + 1), false);
+  for (size_t k = first; k < keyframes_.size(); ++k)
+    for (int id : keyframes_[k].point_ids)
+      if (id >= 0) seen[size_t(id - lowest)] = true;
+  for (size_t i = 0; i < seen.size(); ++i)
+    if (seen[i]) ids.push_back(lowest + int(i));
   return ids;
 }
 
