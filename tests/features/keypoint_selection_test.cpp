@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -46,6 +48,46 @@ TEST(KeypointSelection, NonMaximumSuppressionKeepsLocalPeaks) {
   ASSERT_EQ(kept.size(), 2u);  // (11,10) beats both neighbours; of the tie the first stays
   EXPECT_EQ(kept[0].pt, cv::Point(20, 20));
   EXPECT_EQ(kept[1].pt, cv::Point(11, 10));
+}
+
+TEST(KeypointSelection, NonMaximumSuppressionEqualsBruteForce) {
+  // Dense random candidates in a small window, responses from a few values so ties abound, in
+  // a shuffled order; the reference compares every pair.
+  cv::RNG rng(11);
+  std::vector<cv::Point> points;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 30; ++x)
+      if (rng.uniform(0, 3) > 0) points.emplace_back(x, y);
+  std::vector<float> responses;
+  for (size_t i = 0; i < points.size(); ++i) responses.push_back(float(rng.uniform(0, 6)));
+  for (size_t i = points.size(); i > 1; --i) {
+    const size_t j = size_t(rng.uniform(0, int(i)));
+    std::swap(points[i - 1], points[j]);
+    std::swap(responses[i - 1], responses[j]);
+  }
+  std::vector<Corner> expected;
+  for (size_t i = 0; i < points.size(); ++i) {
+    bool is_max = true;
+    for (size_t j = 0; j < points.size(); ++j) {
+      const cv::Point d = points[j] - points[i];
+      if (j == i || std::abs(d.x) > 1 || std::abs(d.y) > 1) continue;
+      const bool earlier = d.y < 0 || (d.y == 0 && d.x < 0);
+      if (responses[j] > responses[i] || (responses[j] == responses[i] && earlier)) is_max = false;
+    }
+    if (is_max) expected.push_back({points[i], responses[i]});
+  }
+  const std::vector<Corner> kept = suppress_non_maxima(points, responses, {30, 30});
+  ASSERT_EQ(kept.size(), expected.size());
+  std::vector<cv::Point> kept_points, expected_points;
+  for (const Corner& c : kept) kept_points.push_back(c.pt);
+  for (const Corner& c : expected) expected_points.push_back(c.pt);
+  const auto raster = [](const cv::Point& a, const cv::Point& b) {
+    return a.y != b.y ? a.y < b.y : a.x < b.x;
+  };
+  std::sort(kept_points.begin(), kept_points.end(), raster);
+  std::sort(expected_points.begin(), expected_points.end(), raster);
+  EXPECT_EQ(kept_points, expected_points);
+  for (size_t i = 1; i < kept.size(); ++i) EXPECT_GE(kept[i - 1].response, kept[i].response);
 }
 
 TEST(KeypointSelection, SpreadCapsEachCellAtItsShare) {
