@@ -88,7 +88,8 @@ std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates
   cv::Mat scores = map(cv::Rect(cv::Point(0, 0), image_size));
   for (size_t i = 0; i < candidates.size(); ++i) scores.at<float>(candidates[i]) = responses[i];
   std::vector<Corner> kept;
-  for (const cv::Point& p : candidates) {
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const cv::Point& p = candidates[i];
     const float r = scores.at<float>(p);
     bool is_max = true;
     for (int dy = -1; dy <= 1 && is_max; ++dy) {
@@ -102,7 +103,7 @@ std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates
         if (row[x] > r || (row[x] == r && earlier)) is_max = false;
       }
     }
-    if (is_max) kept.push_back({p, r});
+    if (is_max) kept.push_back({p, r, static_cast<int>(i)});
   }
   for (const cv::Point& p : candidates) scores.at<float>(p) = kNone;
   std::sort(kept.begin(), kept.end(), [](const Corner& a, const Corner& b) { return stronger(a, b); });

@@ -10,6 +10,7 @@ namespace slamkit {
 struct Corner {
   cv::Point pt;
   float response = 0;
+  int candidate = -1;  // index in the candidate list it was chosen from
 };
 
 // Shi-Tomasi response (smaller eigenvalue of the structure tensor of 3x3 Sobel derivatives over

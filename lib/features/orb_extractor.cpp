@@ -17,8 +17,29 @@ namespace {
 
 constexpr float kPatchSize = 31.0f;  // ORB's patch, for cv::KeyPoint::size
 
-bool raster_less(const cv::Point& a, const cv::Point& b) {
-  return a.y != b.y ? a.y < b.y : a.x < b.x;
+// Low-texture cells get a second chance at the lower threshold (ORB-SLAM2's retry): the corners
+// found there, in cells where `strong` has none. The segment test reads only the circle around
+// a pixel, so one FAST call over a run of empty cells in a grid row finds what a call per cell
+// would, with less overhead per call.
+std::vector<cv::Point> retry_empty_cells(const cv::Mat& level, const std::vector<cv::Point>& strong,
+                                         const CellGrid& grid, const OrbSettings& settings) {
+  std::vector<bool> empty(grid.count(), true);
+  for (const cv::Point& p : strong) empty[grid.index_of(p)] = false;
+  std::vector<cv::Point> weak;
+  for (int c = 0; c < grid.count();) {
+    if (!empty[c]) {
+      ++c;
+      continue;
+    }
+    const int row_end = (c / grid.cols + 1) * grid.cols;
+    int last = c;
+    while (last + 1 < row_end && empty[last + 1]) ++last;
+    const std::vector<cv::Point> found = detect_fast(level, grid.cell(c) | grid.cell(last),
+                                                     settings.fast_min_threshold, settings.fast_type);
+    weak.insert(weak.end(), found.begin(), found.end());
+    c = last + 1;
+  }
+  return weak;
 }
 
 // Up to `quota` corners of one level image, chosen by Shi-Tomasi, in level pixels.
@@ -30,23 +51,10 @@ std::vector<Corner> detect_level(const cv::Mat& level, int quota, const OrbSetti
   const std::vector<cv::Point> strong =
       detect_fast(level, region, settings.fast_threshold, settings.fast_type);
   const CellGrid grid = CellGrid::over(region, settings.cell_size);
-  std::vector<cv::Point> candidates = strong;
+  std::vector<cv::Point> candidates = strong;  // the strong ones first, then the retry's
   if (settings.spread_over_image) {
-    // Low-texture cells get a second chance at the lower threshold (ORB-SLAM2's retry). The
-    // segment test reads only the circle around a pixel, so one FAST call over a run of empty
-    // cells in a grid row finds what a call per cell would, with less overhead per call.
-    std::vector<bool> empty(grid.count(), true);
-    for (const cv::Point& p : strong) empty[grid.index_of(p)] = false;
-    for (int c = 0; c < grid.count();) {
-      if (!empty[c]) { ++c; continue; }
-      const int row_end = (c / grid.cols + 1) * grid.cols;
-      int last = c;
-      while (last + 1 < row_end && empty[last + 1]) ++last;
-      const std::vector<cv::Point> weak = detect_fast(level, grid.cell(c) | grid.cell(last),
-                                                      settings.fast_min_threshold, settings.fast_type);
-      candidates.insert(candidates.end(), weak.begin(), weak.end());
-      c = last + 1;
-    }
+    const std::vector<cv::Point> weak = retry_empty_cells(level, strong, grid, settings);
+    candidates.insert(candidates.end(), weak.begin(), weak.end());
   }
   // Suppression over all candidates, so a weak corner cannot sit next to a strong one.
   const std::vector<Corner> ranked = suppress_non_maxima(
@@ -58,8 +66,7 @@ std::vector<Corner> detect_level(const cv::Mat& level, int quota, const OrbSetti
   // would displace more repeatable corners (measured on fr1/fr2 desk).
   std::vector<Corner> first, second;
   for (const Corner& c : ranked) {
-    (std::binary_search(strong.begin(), strong.end(), c.pt, raster_less) ? first : second)
-        .push_back(c);
+    (c.candidate < static_cast<int>(strong.size()) ? first : second).push_back(c);
   }
   std::vector<Corner> chosen = select_spread(first, quota, grid, settings.max_cell_share);
   const std::vector<Corner> fill =
