@@ -50,7 +50,9 @@ WindowCode encode_windows(const ImagePyramid& grey, const WindowPattern& pattern
       const uchar* rows[2] = {level_image.ptr<uchar>(2 * wy), level_image.ptr<uchar>(2 * wy + 1)};
       for (int wx = 0; wx < windows_x; ++wx, ++bit) {
         const uint8_t c = pattern.choice(level, wx, wy);
-        if (rows[c >> 1][2 * wx + (c & 1)] >= tau) code.words[bit >> 6] |= uint64_t(1) << (bit & 63);
+        // Branch-free: on image data the comparison is a coin toss the predictor cannot learn.
+        const uint64_t set = rows[c >> 1][2 * wx + (c & 1)] >= tau;
+        code.words[bit >> 6] |= set << (bit & 63);
       }
     }
   }
