@@ -77,36 +77,33 @@ std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv
 std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates,
                                         const std::vector<float>& responses, cv::Size image_size) {
   constexpr float kNone = -std::numeric_limits<float>::infinity();  // never suppresses anything
-  // Candidate responses on a map. Filling a fresh full-size map took longer than the suppression
+  // Candidate responses on a map with a one-pixel margin, so every 8-neighbour can be read
+  // without a bounds check. Filling a fresh full-size map took longer than the suppression
   // itself, so each thread keeps one, all kNone between calls (reset below).
   thread_local cv::Mat map;
-  if (map.rows < image_size.height || map.cols < image_size.width) {
-    map.create(std::max(map.rows, image_size.height), std::max(map.cols, image_size.width),
-               CV_32F);
+  if (map.rows < image_size.height + 2 || map.cols < image_size.width + 2) {
+    map.create(std::max(map.rows, image_size.height + 2),
+               std::max(map.cols, image_size.width + 2), CV_32F);
     map.setTo(kNone);
   }
-  cv::Mat scores = map(cv::Rect(cv::Point(0, 0), image_size));
+  cv::Mat scores = map(cv::Rect(1, 1, image_size.width, image_size.height));
   for (size_t i = 0; i < candidates.size(); ++i) scores.at<float>(candidates[i]) = responses[i];
+  const size_t step = scores.step1();
   std::vector<Corner> kept;
   for (size_t i = 0; i < candidates.size(); ++i) {
-    const cv::Point& p = candidates[i];
-    const float r = scores.at<float>(p);
-    bool is_max = true;
-    for (int dy = -1; dy <= 1 && is_max; ++dy) {
-      const int y = p.y + dy;
-      if (y < 0 || y >= scores.rows) continue;
-      const float* row = scores.ptr<float>(y);
-      for (int dx = -1; dx <= 1 && is_max; ++dx) {
-        const int x = p.x + dx;
-        if ((dx == 0 && dy == 0) || x < 0 || x >= scores.cols) continue;
-        const bool earlier = dy < 0 || (dy == 0 && dx < 0);
-        if (row[x] > r || (row[x] == r && earlier)) is_max = false;
-      }
-    }
-    if (is_max) kept.push_back({p, r, static_cast<int>(i)});
+    const float* at = scores.ptr<float>(candidates[i].y) + candidates[i].x;
+    const float* above = at - step;
+    const float* below = at + step;
+    const float r = *at;
+    // All eight comparisons, no early exit: the branch would be a coin toss. Equal responses:
+    // the earlier in raster order stays (the row above, and the left neighbour).
+    const bool is_max = (above[-1] < r) & (above[0] < r) & (above[1] < r) & (at[-1] < r) &
+                        (at[1] <= r) & (below[-1] <= r) & (below[0] <= r) & (below[1] <= r);
+    if (is_max) kept.push_back({candidates[i], r, static_cast<int>(i)});
   }
   for (const cv::Point& p : candidates) scores.at<float>(p) = kNone;
-  std::sort(kept.begin(), kept.end(), [](const Corner& a, const Corner& b) { return stronger(a, b); });
+  std::sort(kept.begin(), kept.end(),
+            [](const Corner& a, const Corner& b) { return stronger(a, b); });
   return kept;
 }
 
