@@ -1,9 +1,9 @@
 #include "features/image_pyramid.h"
 
-#include "features/area_downscale.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "features/area_downscale.h"
 
 namespace slamkit {
 

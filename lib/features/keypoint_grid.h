@@ -26,7 +26,7 @@ class KeypointGrid {
   int row(double y) const;
 
   double cell_size_;
-  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  // corner of cell (0, 0)
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();      // corner of cell (0, 0)
   Eigen::Vector2d far_corner_ = Eigen::Vector2d::Zero();  // the points' largest x and y
   int cols_ = 0, rows_ = 0;
   // The points ordered by cell (row-major), so the cells a search box spans in one row are

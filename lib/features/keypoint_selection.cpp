@@ -82,8 +82,8 @@ std::vector<Corner> suppress_non_maxima(const std::vector<cv::Point>& candidates
   // itself, so each thread keeps one, all kNone between calls (reset below).
   thread_local cv::Mat map;
   if (map.rows < image_size.height + 2 || map.cols < image_size.width + 2) {
-    map.create(std::max(map.rows, image_size.height + 2),
-               std::max(map.cols, image_size.width + 2), CV_32F);
+    map.create(std::max(map.rows, image_size.height + 2), std::max(map.cols, image_size.width + 2),
+               CV_32F);
     map.setTo(kNone);
   }
   cv::Mat scores = map(cv::Rect(1, 1, image_size.width, image_size.height));

@@ -34,8 +34,8 @@ std::vector<cv::Point> retry_empty_cells(const cv::Mat& level, const std::vector
     const int row_end = (c / grid.cols + 1) * grid.cols;
     int last = c;
     while (last + 1 < row_end && empty[last + 1]) ++last;
-    const std::vector<cv::Point> found = detect_fast(level, grid.cell(c) | grid.cell(last),
-                                                     settings.fast_min_threshold, settings.fast_type);
+    const std::vector<cv::Point> found = detect_fast(
+        level, grid.cell(c) | grid.cell(last), settings.fast_min_threshold, settings.fast_type);
     weak.insert(weak.end(), found.begin(), found.end());
     c = last + 1;
   }

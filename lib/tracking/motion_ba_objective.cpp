@@ -46,7 +46,7 @@ bool MotionBaObjective::operator()(const double* x, double* residuals, double* j
   pose_at(x, R, t);
   const Eigen::Matrix3d left_jacobian = so3_left_jacobian(Eigen::Vector3d(x[0], x[1], x[2]));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6>> J(jacobian, jacobian ? num_residuals_ : 0,
-                                                          6);
+                                                         6);
   bool all_in_front = true;
   int row = 0;
   for (const Term& term : terms_) {

@@ -3,8 +3,7 @@
 namespace slamkit {
 
 ReprojectionResidual::ReprojectionResidual(const Eigen::Vector3d& p_w, const Eigen::Vector2d& uv,
-                                           double depth, double sigma,
-                                           const ResidualIntrinsics& k)
+                                           double depth, double sigma, const ResidualIntrinsics& k)
     : p_w_(p_w), uv_(uv), disparity_(depth > 0 ? k.bf / depth : 0), inv_sigma_(1 / sigma), k_(k) {}
 
 bool ReprojectionResidual::evaluate(const Eigen::Matrix3d& R_c_w, const Eigen::Vector3d& t_c_w,

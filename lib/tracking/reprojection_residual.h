@@ -16,8 +16,8 @@ struct ResidualIntrinsics {
 // depth noise, so one sigma serves all three residuals.
 class ReprojectionResidual {
  public:
-  using Vector = Eigen::Vector3d;                  // the first dimension() entries are used
-  using Jacobian = Eigen::Matrix<double, 3, 6>;    // likewise its first dimension() rows
+  using Vector = Eigen::Vector3d;                // the first dimension() entries are used
+  using Jacobian = Eigen::Matrix<double, 3, 6>;  // likewise its first dimension() rows
 
   // depth <= 0: no depth, the 2D residual.
   ReprojectionResidual(const Eigen::Vector3d& p_w, const Eigen::Vector2d& uv, double depth,

@@ -26,8 +26,8 @@ Tracker::Tracker(const Camera& camera, const Settings& settings)
     const cv::Matx<double, 1, 5> d(camera_.distortion.k1, camera_.distortion.k2,
                                    camera_.distortion.p1, camera_.distortion.p2,
                                    camera_.distortion.k3);
-    cv::initUndistortRectifyMap(K, d, cv::noArray(), K, {camera_.width, camera_.height},
-                                CV_32FC1, undistort_map_x_, undistort_map_y_);
+    cv::initUndistortRectifyMap(K, d, cv::noArray(), K, {camera_.width, camera_.height}, CV_32FC1,
+                                undistort_map_x_, undistort_map_y_);
   }
 }
 
@@ -132,7 +132,8 @@ std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFram
   std::vector<std::pair<double, size_t>> ranked;
   for (size_t k = 0; k + 1 < keyframes.size(); ++k)
     ranked.push_back({-window_similarity(frame.window_code, keyframes[k].window_code), k});
-  const size_t count = std::min(ranked.size(), size_t(settings_.tracking.relocalisation_candidates));
+  const size_t count =
+      std::min(ranked.size(), size_t(settings_.tracking.relocalisation_candidates));
   std::partial_sort(ranked.begin(), ranked.begin() + long(count), ranked.end());
   std::vector<size_t> candidates = {keyframes.size() - 1};
   for (size_t i = 0; i < count; ++i) candidates.push_back(ranked[i].second);
@@ -145,8 +146,7 @@ std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFram
   return best;
 }
 
-bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate,
-                     PoseSolver solver) const {
+bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate, PoseSolver solver) const {
   // Re-acquired against the map after a failure: the map vouches for the pose, and its jump
   // from the (motion model) pose before says nothing.
   if (previous_lost_ && solver == PoseSolver::kSvdRansac) {
@@ -191,7 +191,8 @@ Tracker::PoseEstimate Tracker::align_svd_ransac(const PreparedFrame& frame,
     const float z = frame.keypoint_depths[size_t(matches[k].keypoint)];
     if (z <= 0) continue;
     q_guess.push_back(T_guess_w * map_.point(matches[k].point_id).p_w);
-    q_curr.push_back(camera_.back_project(frame.features.undistorted[size_t(matches[k].keypoint)], z));
+    q_curr.push_back(
+        camera_.back_project(frame.features.undistorted[size_t(matches[k].keypoint)], z));
     pair_match.push_back(k);
   }
   const RigidFit fit = icp_svd_ransac(q_guess, q_curr, settings_.tracking.ransac);
@@ -294,9 +295,8 @@ void Tracker::decide_and_insert_keyframe(const PreparedFrame& frame,
     compared.push_back(&window_codes_.at(i));
   const int reference_points = int(std::count_if(latest.point_ids.begin(), latest.point_ids.end(),
                                                  [](int id) { return id >= 0; }));
-  const KeyframeDecision decision = decide_keyframe(frame.window_code, compared,
-                                                    int(inliers.size()), reference_points,
-                                                    settings_.keyframes);
+  const KeyframeDecision decision = decide_keyframe(
+      frame.window_code, compared, int(inliers.size()), reference_points, settings_.keyframes);
   record.similarity = decision.similarity;
   record.keyframe = decision.is_keyframe;
   if (decision.is_keyframe) insert_keyframe(frame, record.T_w_c, inliers);
@@ -326,8 +326,8 @@ cv::Mat Tracker::pinhole_depth(const cv::Mat& depth) const {
   if (undistort_map_x_.empty()) return depth;
   cv::Mat out;
   // Nearest neighbour: interpolating would blend foreground and background depths.
-  cv::remap(depth, out, undistort_map_x_, undistort_map_y_, cv::INTER_NEAREST,
-            cv::BORDER_CONSTANT, 0);
+  cv::remap(depth, out, undistort_map_x_, undistort_map_y_, cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+            0);
   return out;
 }
 

@@ -1,12 +1,12 @@
 #include "features/image_pyramid.h"
 
-#include "features/area_downscale.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+
+#include "features/area_downscale.h"
 
 namespace slamkit {
 namespace {
@@ -34,9 +34,9 @@ TEST(ImagePyramid, LevelSizesAndScalesFollowTheFactor) {
 TEST(ImagePyramid, LevelsAreAreaResizedFromLevelZero) {
   const cv::Mat grey = ramp_image();
   const ImagePyramid pyramid = build_pyramid(grey, 3, 1.2);
-  EXPECT_EQ(cv::norm(area_downscale(grey, pyramid.levels[2].size()), pyramid.levels[2],
-                     cv::NORM_INF),
-            0.0);
+  EXPECT_EQ(
+      cv::norm(area_downscale(grey, pyramid.levels[2].size()), pyramid.levels[2], cv::NORM_INF),
+      0.0);
 }
 
 // Reference: the exact area mean in doubles, straight from the definition.

@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
-
-#include <algorithm>
 #include <omp.h>
 
+#include <algorithm>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 #include <vector>

@@ -35,8 +35,8 @@ TEST(Map, LocalPointsAreThoseOfTheLastKeyframesEachOnceAscending) {
   const Camera camera = Camera::freiburg3();
   Map map;
   map.insert_keyframe(keyframe_observing({-1, -1, -1, -1}, 0), camera);  // 0..3
-  map.insert_keyframe(keyframe_observing({3, -1, 1}, 1), camera);         // 3, new 4, 1
-  map.insert_keyframe(keyframe_observing({4, -1, 3, -1}, 2), camera);     // 4, 5, 3, 6
+  map.insert_keyframe(keyframe_observing({3, -1, 1}, 1), camera);        // 3, new 4, 1
+  map.insert_keyframe(keyframe_observing({4, -1, 3, -1}, 2), camera);    // 4, 5, 3, 6
   EXPECT_EQ(map.local_point_ids(1), (std::vector<int>{3, 4, 5, 6}));
   EXPECT_EQ(map.local_point_ids(2), (std::vector<int>{1, 3, 4, 5, 6}));
   EXPECT_EQ(map.local_point_ids(10), (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
