@@ -34,7 +34,7 @@ struct WindowCode {
   size_t bits = 0;
 };
 
-// Encodes a frame from the INTER_AREA pyramid of its equivalent grey (R + G + B) / 3, whose
+// Encodes a frame from the area-averaged pyramid of its equivalent grey (R + G + B) / 3, whose
 // first levels must have the pattern's sizes (the feature pyramid does when the keyframe and
 // ORB settings agree on levels and scale). tau is level 0's mean unless given. Throws
 // std::invalid_argument when the pyramid does not fit the pattern.
