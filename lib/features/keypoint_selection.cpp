@@ -12,7 +12,7 @@
 namespace slamkit {
 namespace {
 
-inline bool stronger(const Corner& a, const Corner& b) {
+bool stronger(const Corner& a, const Corner& b) {
   if (a.response != b.response) return a.response > b.response;
   return a.pt.y != b.pt.y ? a.pt.y < b.pt.y : a.pt.x < b.pt.x;
 }
