@@ -8,10 +8,11 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "io/png_file.h"
 #include "core/trajectory.h"
+#include "datasets/synth/map_quality.h"
 #include "datasets/synth/renderer.h"
 #include "io/camera_yaml.h"
+#include "io/png_file.h"
 #include "io/trajectory_io.h"
 
 namespace fs = std::filesystem;
@@ -137,6 +138,7 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
   write_tum_trajectory(spec.out / "groundtruth.txt", groundtruth,
                        "ground truth trajectory (exact, T_w_c)\n# file: '" + describe(spec) + "'");
   write_camera_yaml(spec.out / "calibration.yaml", camera);
+  write_synthetic_info(spec.out, spec);  // lets tools (map-eval) rebuild the scene
 }
 
 }  // namespace slamkit::synth

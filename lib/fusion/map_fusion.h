@@ -1,0 +1,56 @@
+#pragma once
+// The point-cloud map (SPEC section 6): frames back-projected with their final poses into one
+// coloured cloud, voxel-grid down-sampled, statistical outliers removed, written as PLY. The
+// only module that includes PCL (in its .cpp files: callers never see PCL types).
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+#include "core/settings/fusion_settings.h"
+#include "io/tum_sequence.h"
+
+namespace slamkit {
+
+struct FusionFrame {
+  size_t index = 0;  // frame of the sequence (TumSequence::load)
+  Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
+};
+
+struct FusionReport {
+  size_t frames = 0;
+  size_t raw_points = 0;        // back-projected, before any filter
+  size_t after_voxel_grid = 0;  // after the last (global) voxel-grid pass
+  size_t after_outlier_removal = 0;
+  // Most points held at once (merged cloud plus the batches in flight): the memory bound.
+  // At 32 bytes a point (pcl::PointXYZRGB), with 2 threads and the default settings it stays
+  // near 2 x the map's voxel count + 3 batches of raw points, whatever the frame count.
+  size_t peak_points = 0;
+  double seconds = 0;
+};
+
+// Back-projects the frames (loaded again from the sequence, in parallel batches of
+// settings.batch_frames; each batch voxelised before it is merged, so memory stays bounded),
+// filters, and writes `ply_path` (binary unless !settings.binary_ply). The output is the same
+// at any thread count. progress(done, total) is called on the calling thread.
+//
+// Every settings.pixel_stride-th raw pixel (u, v) is undistorted once for the whole grid
+// (the depth is registered to colour in the raw lens geometry), so a point is
+// z * ((u' - cx) / fx, (v' - cy) / fy, 1) at the ideal pixel (u', v'); depth 0 or beyond
+// settings.max_depth is skipped. The PLY is written as ply_cloud.h describes, through a
+// temporary file renamed into place.
+// Throws InputError naming the sequence folder for a frame index out of range, the image for
+// an unreadable frame, ply_path when it cannot be written (checked before any work) or when
+// no frame has valid depth, and "fusion settings" for a setting out of range.
+FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame>& frames,
+                      const FusionSettings& settings, const std::filesystem::path& ply_path,
+                      const std::function<void(size_t, size_t)>& progress = {});
+
+// The camera centres of `frames` as a small binary PLY (one vertex each, coloured from blue
+// at the first frame to red at the last), to open together with map.ply in a viewer: e.g.
+// `slamkit` runs may write keyframe_centres.ply beside map.ply. Throws like write_ply_cloud,
+// so an empty list is an error.
+void write_camera_poses_ply(const std::filesystem::path& path,
+                            const std::vector<FusionFrame>& frames);
+
+}  // namespace slamkit

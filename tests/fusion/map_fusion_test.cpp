@@ -1,0 +1,398 @@
+#include "fusion/map_fusion.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <sstream>
+
+#include "core/error.h"
+#include "datasets/synth/map_quality.h"
+#include "datasets/synth/sequence_writer.h"
+#include "fusion/ply_cloud.h"
+#include "support/test_data.h"
+#include "synth/shared_room.h"
+
+namespace slamkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One short synthetic sequence per test binary (rendering costs ~50 ms a frame a core).
+constexpr int kFrames = 24;
+constexpr uint64_t kSeed = 3;
+
+const fs::path& rendered_sequence() {
+  static const fs::path folder = [] {
+    synth::SequenceSpec spec;
+    spec.preset = synth::Preset::kDesk;
+    spec.frames = kFrames;
+    spec.seed = kSeed;
+    // One folder per process: ctest runs each test in its own process, maybe in parallel.
+    spec.out = fs::temp_directory_path() / "slamkit_tests" /
+               ("fusion_sequence_" + std::to_string(getpid()));
+    fs::remove_all(spec.out);
+    synth::write_sequence(synth::test::shared_room(), spec);
+    return spec.out;
+  }();
+  return folder;
+}
+
+const TumSequence& sequence() {
+  static const TumSequence seq = TumSequence::open(rendered_sequence());
+  return seq;
+}
+
+// Every `step`-th frame with its exact groundtruth pose.
+std::vector<FusionFrame> groundtruth_frames(const TumSequence& seq, size_t step = 1) {
+  std::vector<FusionFrame> frames;
+  for (size_t i = 0; i < seq.size(); i += step) {
+    const auto k = seq.groundtruth()->nearest(seq.stamp(i), 0.0);
+    EXPECT_TRUE(k) << "frame " << i;
+    frames.push_back({i, (*seq.groundtruth())[*k].T_w_c});
+  }
+  return frames;
+}
+
+std::vector<Eigen::Isometry3d> poses_of(const std::vector<FusionFrame>& frames) {
+  std::vector<Eigen::Isometry3d> poses;
+  for (const FusionFrame& f : frames) poses.push_back(f.T_w_c);
+  return poses;
+}
+
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A second PLY reader, written from the format as Open3D (rply) and CloudCompare expect it:
+// "ply", a format line, elements with their properties, "end_header"; then the vertex rows.
+// It accepts exactly the layout the map promises (x y z float, red green blue uchar) and
+// other elements only when empty.
+struct PlyFile {
+  std::string format;
+  size_t vertices = 0;
+  size_t header_bytes = 0;
+  PlyCloud cloud;
+};
+
+PlyFile parse_ply(const fs::path& path) {
+  const std::string bytes = file_bytes(path);
+  PlyFile ply;
+  std::istringstream header(bytes);
+  std::string line;
+  std::getline(header, line);
+  EXPECT_EQ(line, "ply");
+  std::vector<std::string> properties;
+  std::string element;
+  while (std::getline(header, line) && line != "end_header") {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      std::string version;
+      words >> ply.format >> version;
+      EXPECT_EQ(version, "1.0");
+    } else if (keyword == "element") {
+      size_t count = 0;
+      words >> element >> count;
+      if (element == "vertex")
+        ply.vertices = count;
+      else
+        EXPECT_EQ(count, 0u) << "unexpected non-empty element " << element;
+    } else if (keyword == "property") {
+      std::string type, name;
+      words >> type >> name;
+      if (element == "vertex") properties.push_back(type + " " + name);
+    } else {
+      EXPECT_TRUE(keyword == "comment" || keyword == "obj_info") << line;
+    }
+  }
+  EXPECT_EQ(line, "end_header");
+  ply.header_bytes = size_t(header.tellg());
+  EXPECT_EQ(properties, (std::vector<std::string>{"float x", "float y", "float z", "uchar red",
+                                                  "uchar green", "uchar blue"}));
+  if (ply.format == "binary_little_endian") {
+    constexpr size_t kRow = 3 * sizeof(float) + 3;
+    EXPECT_EQ(bytes.size(), ply.header_bytes + ply.vertices * kRow) << path;
+    for (size_t i = 0; i < ply.vertices && ply.header_bytes + (i + 1) * kRow <= bytes.size(); ++i) {
+      const char* row = bytes.data() + ply.header_bytes + i * kRow;
+      Eigen::Vector3f p;
+      std::memcpy(p.data(), row, 3 * sizeof(float));  // x86: little-endian already
+      ply.cloud.points.push_back(p);
+      ply.cloud.colours.push_back({uint8_t(row[12]), uint8_t(row[13]), uint8_t(row[14])});
+    }
+  } else {
+    EXPECT_EQ(ply.format, "ascii");
+    for (size_t i = 0; i < ply.vertices; ++i) {
+      Eigen::Vector3f p;
+      int r = -1, g = -1, b = -1;
+      header >> p.x() >> p.y() >> p.z() >> r >> g >> b;
+      ply.cloud.points.push_back(p);
+      ply.cloud.colours.push_back({uint8_t(r), uint8_t(g), uint8_t(b)});
+    }
+    EXPECT_TRUE(header) << "fewer vertex rows than the header says";
+    std::string rest;
+    header >> rest;
+    EXPECT_TRUE(rest.empty()) << "more rows than the header says";
+  }
+  return ply;
+}
+
+PlyCloud random_cloud(size_t n) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> coordinate(-4.0f, 4.0f);
+  std::uniform_int_distribution<int> channel(0, 255);
+  PlyCloud cloud;
+  for (size_t i = 0; i < n; ++i) {
+    cloud.points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+    cloud.colours.push_back({uint8_t(channel(rng)), uint8_t(channel(rng)), uint8_t(channel(rng))});
+  }
+  return cloud;
+}
+
+TEST(PlyCloud, BinaryRoundTripIsExactAndAsciiKeepsSixDigits) {
+  const fs::path dir = test::temp_dir("ply_round_trip");
+  const PlyCloud cloud = random_cloud(1000);
+  write_ply_cloud(dir / "binary.ply", cloud, true);
+  write_ply_cloud(dir / "ascii.ply", cloud, false);
+  EXPECT_FALSE(fs::exists(temporary_path(dir / "binary.ply")));
+
+  for (const PlyCloud& back :
+       {read_ply_cloud(dir / "binary.ply"), parse_ply(dir / "binary.ply").cloud}) {
+    ASSERT_EQ(back.points.size(), cloud.points.size());
+    for (size_t i = 0; i < cloud.points.size(); ++i) {
+      EXPECT_EQ(back.points[i], cloud.points[i]) << i;
+      EXPECT_EQ(back.colours[i], cloud.colours[i]) << i;
+    }
+  }
+  for (const PlyCloud& back :
+       {read_ply_cloud(dir / "ascii.ply"), parse_ply(dir / "ascii.ply").cloud}) {
+    ASSERT_EQ(back.points.size(), cloud.points.size());
+    for (size_t i = 0; i < cloud.points.size(); ++i) {
+      // PCL prints 6 significant digits: |x| < 4 m keeps 5e-6 m.
+      EXPECT_LT((back.points[i] - cloud.points[i]).cwiseAbs().maxCoeff(), 5.1e-6f) << i;
+      EXPECT_EQ(back.colours[i], cloud.colours[i]) << i;
+    }
+  }
+  EXPECT_EQ(read_ply_points(dir / "binary.ply"), cloud.points);
+}
+
+TEST(PlyCloud, BadFilesAndCloudsAreInputErrorsNamingThePath) {
+  const fs::path dir = test::temp_dir("ply_bad");
+  const auto expect_error_naming = [](const fs::path& path, const auto& action) {
+    try {
+      action();
+      ADD_FAILURE() << "expected InputError for " << path;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+    }
+  };
+  expect_error_naming(dir / "missing.ply", [&] { read_ply_cloud(dir / "missing.ply"); });
+  std::ofstream(dir / "text.ply") << "not a ply\n";
+  expect_error_naming(dir / "text.ply", [&] { read_ply_cloud(dir / "text.ply"); });
+  expect_error_naming(dir / "empty.ply", [&] { write_ply_cloud(dir / "empty.ply", {}); });
+  PlyCloud uneven = random_cloud(3);
+  uneven.colours.pop_back();
+  expect_error_naming(dir / "uneven.ply", [&] { write_ply_cloud(dir / "uneven.ply", uneven); });
+  std::ofstream(dir / "blocker") << "a file, not a folder";
+  const fs::path unwritable = dir / "blocker" / "map.ply";
+  expect_error_naming(unwritable, [&] { write_ply_cloud(unwritable, random_cloud(3)); });
+}
+
+TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
+  const fs::path dir = test::temp_dir("layout");
+  FusionSettings settings;
+  settings.pixel_stride = 4;
+  const std::vector<FusionFrame> frames = groundtruth_frames(sequence(), 4);
+  const FusionReport report = fuse_map(sequence(), frames, settings, dir / "map.ply");
+  settings.binary_ply = false;
+  const FusionReport ascii_report = fuse_map(sequence(), frames, settings, dir / "ascii.ply");
+  EXPECT_EQ(ascii_report.after_outlier_removal, report.after_outlier_removal);
+
+  const PlyFile binary = parse_ply(dir / "map.ply");
+  EXPECT_EQ(binary.format, "binary_little_endian");
+  EXPECT_EQ(binary.vertices, report.after_outlier_removal);
+  const PlyCloud pcl_read = read_ply_cloud(dir / "map.ply");
+  ASSERT_EQ(pcl_read.points.size(), binary.cloud.points.size());
+  EXPECT_EQ(pcl_read.points, binary.cloud.points);
+  EXPECT_EQ(pcl_read.colours, binary.cloud.colours);
+
+  const PlyFile ascii = parse_ply(dir / "ascii.ply");
+  EXPECT_EQ(ascii.format, "ascii");
+  ASSERT_EQ(ascii.vertices, binary.vertices);
+  for (size_t i = 0; i < ascii.vertices; ++i) {
+    EXPECT_LT((ascii.cloud.points[i] - binary.cloud.points[i]).cwiseAbs().maxCoeff(), 1e-5f);
+    EXPECT_EQ(ascii.cloud.colours[i], binary.cloud.colours[i]);
+  }
+  EXPECT_EQ(report.frames, frames.size());
+  EXPECT_GT(report.raw_points, report.after_voxel_grid);
+  EXPECT_GE(report.after_voxel_grid, report.after_outlier_removal);
+  EXPECT_GT(report.after_outlier_removal, report.after_voxel_grid * 9 / 10);
+}
+
+TEST(MapFusion, SameBytesAtOneAndTwoThreads) {
+  const fs::path dir = test::temp_dir("threads");
+  FusionSettings settings;
+  settings.batch_frames = 3;  // several batches, merged and re-voxelised on the way
+  settings.pixel_stride = 3;
+  const std::vector<FusionFrame> frames = groundtruth_frames(sequence());
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const FusionReport one = fuse_map(sequence(), frames, settings, dir / "one.ply");
+  omp_set_num_threads(2);
+  const FusionReport two = fuse_map(sequence(), frames, settings, dir / "two.ply");
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.after_outlier_removal, two.after_outlier_removal);
+  EXPECT_TRUE(file_bytes(dir / "one.ply") == file_bytes(dir / "two.ply"));
+}
+
+TEST(MapFusion, GroundtruthPosesGiveAnAccurateAndCompleteMap) {
+  const fs::path dir = test::temp_dir("geometry");
+  const FusionSettings settings;  // the defaults: stride 2, 1 cm voxels, 3 m
+  const std::vector<FusionFrame> frames = groundtruth_frames(sequence());
+  const FusionReport report = fuse_map(sequence(), frames, settings, dir / "map.ply");
+  synth::MapQualitySettings quality_settings;
+  quality_settings.frame_step = 4;
+  quality_settings.max_depth = settings.max_depth;
+  const synth::MapQuality q =
+      synth::evaluate_map_quality(read_ply_points(dir / "map.ply"), synth::test::shared_room(),
+                                  poses_of(frames), sequence().camera(), quality_settings);
+  std::printf(
+      "fused %zu frames in %.2f s: %zu raw points, %zu after voxel grid, %zu after "
+      "outliers, peak %zu held\naccuracy mean %.4f median %.4f p95 %.4f max %.4f m; "
+      "completeness %.3f of %zu samples\n",
+      report.frames, report.seconds, report.raw_points, report.after_voxel_grid,
+      report.after_outlier_removal, report.peak_points, q.accuracy_mean, q.accuracy_median,
+      q.accuracy_p95, q.accuracy_max, q.completeness, q.surface_samples);
+  EXPECT_EQ(q.map_points, report.after_outlier_removal);
+  EXPECT_LT(q.accuracy_median, 0.01);
+  // Most points lie far off, where single-frame depth noise is 8-14 mm (2.5-3 m).
+  EXPECT_LT(q.accuracy_p95, 0.03);
+  EXPECT_GT(q.completeness, 0.95);
+
+  // Near the camera the sensor is millimetre-exact (sigma 1.2-2.4 mm up to 1.5 m): so is the
+  // map, which shows that fusion adds no error of its own (pixel centres, undistortion, pose).
+  FusionSettings near = settings;
+  near.max_depth = quality_settings.max_depth = 1.5;
+  fuse_map(sequence(), frames, near, dir / "near.ply");
+  const synth::MapQuality nq =
+      synth::evaluate_map_quality(read_ply_points(dir / "near.ply"), synth::test::shared_room(),
+                                  poses_of(frames), sequence().camera(), quality_settings);
+  EXPECT_LT(nq.accuracy_median, 0.002);
+  EXPECT_LT(nq.accuracy_p95, 0.004);
+  EXPECT_GT(nq.completeness, 0.95);
+}
+
+TEST(MapFusion, DepthBeyondMaxDepthIsCut) {
+  const fs::path dir = test::temp_dir("max_depth");
+  const std::vector<FusionFrame> frames = groundtruth_frames(sequence(), 6);
+  const Camera& camera = sequence().camera();
+  // The nearest depth of a world point over the fused cameras that image it (a few pixels of
+  // margin: a voxel centroid may sit just outside the image of the frame it came from).
+  const auto nearest_depth = [&](const Eigen::Vector3f& p) {
+    double nearest = 1e9;
+    for (const FusionFrame& f : frames) {
+      const Eigen::Vector3d p_c = f.T_w_c.inverse() * p.cast<double>();
+      const Eigen::Vector2d uv = camera.project(p_c);
+      if (p_c.z() > 0 && uv.x() > -10 && uv.y() > -10 && uv.x() < camera.width + 10 &&
+          uv.y() < camera.height + 10)
+        nearest = std::min(nearest, p_c.z());
+    }
+    return nearest;
+  };
+  FusionSettings settings;
+  settings.pixel_stride = 4;
+  settings.max_depth = 8.0;
+  fuse_map(sequence(), frames, settings, dir / "far.ply");
+  size_t beyond = 0;
+  for (const Eigen::Vector3f& p : read_ply_points(dir / "far.ply"))
+    beyond += nearest_depth(p) > 1.7;
+  EXPECT_GT(beyond, 1000u) << "the scene must reach beyond the cut for this test to mean much";
+
+  settings.max_depth = 1.5;
+  fuse_map(sequence(), frames, settings, dir / "near.ply");
+  // A voxel centroid lies within a voxel diagonal of a point that was within the cut.
+  const double limit = settings.max_depth + std::sqrt(3.0) * settings.voxel_size;
+  for (const Eigen::Vector3f& p : read_ply_points(dir / "near.ply"))
+    ASSERT_LE(nearest_depth(p), limit) << p.transpose();
+}
+
+TEST(MapFusion, MemoryStaysBoundedByTheVoxelCountNotTheFrameCount) {
+  const fs::path dir = test::temp_dir("memory");
+  FusionSettings settings;
+  settings.batch_frames = 2;
+  const FusionReport report =
+      fuse_map(sequence(), groundtruth_frames(sequence()), settings, dir / "map.ply");
+  const size_t batch_capacity = size_t(settings.batch_frames) * (640 / 2) * (480 / 2);
+  // Merged cloud below 2 x max(voxels, batch capacity), plus the batches in flight.
+  EXPECT_LE(report.peak_points, 2 * std::max(report.after_voxel_grid, batch_capacity) +
+                                    (2 + size_t(omp_get_max_threads())) * batch_capacity);
+  EXPECT_LT(report.peak_points, report.raw_points / 2);
+}
+
+TEST(MapFusion, BadInputIsAnInputErrorNamingTheFile) {
+  const fs::path dir = test::temp_dir("bad_input");
+  const FusionSettings settings;
+  const auto error_of = [&](const TumSequence& seq, const std::vector<FusionFrame>& frames,
+                            const fs::path& out) -> std::string {
+    try {
+      fuse_map(seq, frames, settings, out);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  // A frame index out of range names the sequence.
+  std::string message = error_of(sequence(), {{size_t(kFrames), {}}}, dir / "map.ply");
+  EXPECT_NE(message.find(rendered_sequence().string()), std::string::npos) << message;
+  EXPECT_NE(message.find("out of range"), std::string::npos) << message;
+
+  // An unreadable image names the image, whichever batch it is in.
+  const fs::path copy = dir / "copy";
+  fs::copy(rendered_sequence(), copy, fs::copy_options::recursive);
+  const TumSequence damaged = TumSequence::open(copy);
+  const fs::path broken = copy / damaged.files(7).depth.file;
+  std::ofstream(broken, std::ios::trunc) << "not a PNG";
+  message = error_of(damaged, groundtruth_frames(damaged), dir / "map.ply");
+  EXPECT_NE(message.find(broken.string()), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(dir / "map.ply"));
+
+  // An output folder that cannot be created fails before any work.
+  std::ofstream(dir / "blocker") << "a file, not a folder";
+  const fs::path unwritable = dir / "blocker" / "run" / "map.ply";
+  message = error_of(sequence(), groundtruth_frames(sequence(), 8), unwritable);
+  EXPECT_NE(message.find(unwritable.string()), std::string::npos) << message;
+
+  FusionSettings bad = settings;
+  bad.voxel_size = 0;
+  EXPECT_THROW(fuse_map(sequence(), {}, bad, dir / "map.ply"), InputError);
+}
+
+TEST(CameraPoses, PlyHoldsTheCentresFromBlueToRed) {
+  const fs::path dir = test::temp_dir("poses");
+  const std::vector<FusionFrame> frames = groundtruth_frames(sequence(), 5);
+  write_camera_poses_ply(dir / "cameras.ply", frames);
+  const PlyCloud cloud = read_ply_cloud(dir / "cameras.ply");
+  ASSERT_EQ(cloud.points.size(), frames.size());
+  for (size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(cloud.points[i], frames[i].T_w_c.translation().cast<float>()) << i;
+  EXPECT_EQ(cloud.colours.front(), (Rgb8{0, 0, 255}));
+  EXPECT_EQ(cloud.colours.back(), (Rgb8{255, 0, 0}));
+}
+
+TEST(SyntheticInfo, WrittenWithTheSequenceSoToolsCanRebuildTheScene) {
+  const std::optional<synth::SyntheticInfo> info = synth::read_synthetic_info(rendered_sequence());
+  ASSERT_TRUE(info);
+  EXPECT_EQ(info->scene, "furnished_room");
+  EXPECT_EQ(info->preset, synth::Preset::kDesk);
+  EXPECT_EQ(info->frames, kFrames);
+  EXPECT_EQ(info->seed, kSeed);
+}
+
+}  // namespace
+}  // namespace slamkit
