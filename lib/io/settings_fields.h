@@ -93,7 +93,6 @@ void visit_fields(FailureSettings& s, V& v) {
 template <class V>
 void visit_fields(TrackingSettings& s, V& v) {
   v.field("min_pairs_for_svd", s.min_pairs_for_svd);
-  v.field("local_map_keyframes", s.local_map_keyframes);
   v.field("lost_search_radius_factor", s.lost_search_radius_factor);
   v.field("min_matches_for_box", s.min_matches_for_box);
   v.field("relocalisation_candidates", s.relocalisation_candidates);
@@ -114,6 +113,68 @@ void visit_fields(KeyframeSettings& s, V& v) {
 }
 
 template <class V>
+void visit_fields(MappingSettings& s, V& v) {
+  v.field("covisibility_min_shared", s.covisibility_min_shared);
+  v.field("local_map_keyframes", s.local_map_keyframes);
+  v.field("cull_after_keyframes", s.cull_after_keyframes);
+  v.field("min_observations", s.min_observations);
+  v.field("min_found_ratio", s.min_found_ratio);
+  v.field("fuse_duplicates", s.fuse_duplicates);
+  v.field("fuse_neighbours", s.fuse_neighbours);
+  v.field("fuse_radius", s.fuse_radius);
+  v.field("fuse_max_distance", s.fuse_max_distance);
+  v.field("min_view_cos", s.min_view_cos);
+}
+
+template <class V>
+void visit_fields(BaResidualSettings& s, V& v) {
+  v.field("use_depth", s.use_depth);
+  v.field("virtual_bf", s.virtual_bf);
+  v.field("chi2_2d", s.chi2_2d);
+  v.field("chi2_3d", s.chi2_3d);
+}
+
+template <class V>
+void visit_fields(LocalBaSettings& s, V& v) {
+  v.field("enabled", s.enabled);
+  v.field("robust_iterations", s.robust_iterations);
+  v.field("refine_iterations", s.refine_iterations);
+  v.field("fix_points_after_iterations", s.fix_points_after_iterations);
+  v.field("motion_rotation_weight", s.motion_rotation_weight);
+  v.field("min_motion", s.min_motion);
+  v.field("max_covisible_keyframes", s.max_covisible_keyframes);
+}
+
+template <class V>
+void visit_fields(GlobalBaSettings& s, V& v) {
+  v.field("enabled", s.enabled);
+  v.field("iterations", s.iterations);
+  v.field("robust", s.robust);
+  v.field("refine_iterations", s.refine_iterations);
+}
+
+template <class V>
+void visit_fields(OptimizationSettings& s, V& v) {
+  v.section("residual", s.residual);
+  v.section("local_ba", s.local);
+  v.section("global_ba", s.global);
+}
+
+template <class V>
+void visit_fields(FusionSettings& s, V& v) {
+  v.field("enabled", s.enabled);
+  v.field("frame_step", s.frame_step);
+  v.field("pixel_stride", s.pixel_stride);
+  v.field("max_depth", s.max_depth);
+  v.field("voxel_size", s.voxel_size);
+  v.field("batch_frames", s.batch_frames);
+  v.field("remove_outliers", s.remove_outliers);
+  v.field("outlier_neighbours", s.outlier_neighbours);
+  v.field("outlier_std_ratio", s.outlier_std_ratio);
+  v.field("binary_ply", s.binary_ply);
+}
+
+template <class V>
 void visit_fields(PipelineSettings& s, V& v) {
   v.field("threads", s.threads);
   v.field("chunk_frames", s.chunk_frames);
@@ -126,6 +187,9 @@ void visit_fields(Settings& s, V& v) {
   v.section("matcher", s.matcher);
   v.section("tracking", s.tracking);
   v.section("keyframes", s.keyframes);
+  v.section("mapping", s.mapping);
+  v.section("optimization", s.optimization);
+  v.section("map", s.fusion);
   v.section("pipeline", s.pipeline);
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// A keyframe (SPEC section 3): its timestamp, its pose and inverse, its ORB features and the
-// map points its keypoints observe.
+// A keyframe (SPEC section 3): its timestamp, its pose and inverse, its ORB features, the map
+// points its keypoints observe, and its place in the covisibility graph and spanning tree.
 #include <Eigen/Geometry>
+#include <map>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -20,6 +21,20 @@ struct Keyframe {
   cv::Mat descriptors;                       // N x 32 CV_8U
   std::vector<int> point_ids;                // per keypoint: map point index, -1 = none
   WindowCode window_code;                    // for finding similar views when lost
+
+  // Covisibility: shared points with every other keyframe that shares any, and the
+  // neighbours linked in the graph (>= covisibility_min_shared points, or the best one),
+  // by decreasing weight then increasing index.
+  std::map<int, int> shared_points;
+  std::vector<int> covisible;
+  int parent = -1;  // spanning tree: the best neighbour at insertion (-1 for the first)
+  std::vector<int> children;
+
+  void set_pose(const Eigen::Isometry3d& T_world_camera) {
+    T_w_c = T_world_camera;
+    T_c_w = T_world_camera.inverse();
+  }
+  Eigen::Vector3d centre() const { return T_w_c.translation(); }
 };
 
 }  // namespace slamkit

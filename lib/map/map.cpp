@@ -1,49 +1,196 @@
 #include "map/map.h"
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
+
+#include "features/descriptor.h"
 
 namespace slamkit {
 
-size_t Map::insert_keyframe(Keyframe keyframe, const Camera& camera) {
-  const size_t index = keyframes_.size();
-  keyframe.T_c_w = keyframe.T_w_c.inverse();
-  for (size_t i = 0; i < keyframe.keypoints.size(); ++i) {
-    int& id = keyframe.point_ids[i];
-    if (id >= 0) {
-      ++points_[size_t(id)].observations;
-      continue;
-    }
-    if (keyframe.depths[i] <= 0) continue;
-    MapPoint point;
-    point.p_w = keyframe.T_w_c * camera.back_project(keyframe.undistorted[i], keyframe.depths[i]);
-    point.descriptor = keyframe.descriptors.row(int(i)).clone();
-    point.octave = keyframe.keypoints[i].octave;
-    point.first_keyframe = index;
-    id = int(points_.size());
-    points_.push_back(std::move(point));
-  }
+double PyramidGeometry::scale(int octave) const { return std::pow(scale_factor, octave); }
+
+int Map::add_keyframe(Keyframe keyframe) {
+  const int id = static_cast<int>(keyframes_.size());
+  keyframe.set_pose(keyframe.T_w_c);
   keyframes_.push_back(std::move(keyframe));
-  return index;
+  Keyframe& k = keyframes_.back();
+  for (size_t i = 0; i < k.point_ids.size(); ++i) {
+    const int point = k.point_ids[i];
+    if (point < 0) continue;
+    k.point_ids[i] = -1;  // add_observation links it again, unless the point is gone
+    if (!points_[size_t(point)].bad) add_observation(point, id, static_cast<int>(i));
+  }
+  return id;
 }
 
-std::vector<int> Map::local_point_ids(size_t count) const {
-  // Recent keyframes see recent points, so the ids span a short range: marking them there and
-  // reading the marks in order is cheaper than sorting the ids and removing repeats.
-  const size_t first = keyframes_.size() > count ? keyframes_.size() - count : 0;
-  int lowest = std::numeric_limits<int>::max(), highest = -1;
-  for (size_t k = first; k < keyframes_.size(); ++k)
-    for (int id : keyframes_[k].point_ids)
-      if (id >= 0) lowest = std::min(lowest, id), highest = std::max(highest, id);
-  std::vector<int> ids;
-  if (highest < 0) return ids;
-  std::vector<bool> seen(size_t(highest - lowest + 1), false);
-  for (size_t k = first; k < keyframes_.size(); ++k)
-    for (int id : keyframes_[k].point_ids)
-      if (id >= 0) seen[size_t(id - lowest)] = true;
-  for (size_t i = 0; i < seen.size(); ++i)
-    if (seen[i]) ids.push_back(lowest + int(i));
-  return ids;
+int Map::add_point(const Eigen::Vector3d& p_w, int keyframe, int keypoint) {
+  const int id = static_cast<int>(points_.size());
+  MapPoint point;
+  point.p_w = p_w;
+  point.reference_keyframe = keyframe;
+  point.octave = keyframes_[size_t(keyframe)].keypoints[size_t(keypoint)].octave;
+  points_.push_back(std::move(point));
+  add_observation(id, keyframe, keypoint);
+  update_point_descriptor(id);
+  update_point_geometry(id);
+  return id;
+}
+
+void Map::add_observation(int point, int keyframe, int keypoint) {
+  MapPoint& p = points_[size_t(point)];
+  for (const Observation& o : p.observations)
+    if (o.keyframe == keyframe) return;  // one observation per keyframe
+  int& link = keyframes_[size_t(keyframe)].point_ids[size_t(keypoint)];
+  if (link >= 0 && link != point) erase_observation(link, keyframe);
+  link = point;
+  p.observations.push_back({keyframe, keypoint});
+}
+
+void Map::erase_observation(int point, int keyframe) {
+  MapPoint& p = points_[size_t(point)];
+  const auto it = std::find_if(p.observations.begin(), p.observations.end(),
+                               [&](const Observation& o) { return o.keyframe == keyframe; });
+  if (it == p.observations.end()) return;
+  keyframes_[size_t(keyframe)].point_ids[size_t(it->keypoint)] = -1;
+  p.observations.erase(it);
+  if (p.observations.empty()) {
+    p.bad = true;
+    return;
+  }
+  if (p.reference_keyframe == keyframe) {
+    const Observation& first = p.observations.front();
+    p.reference_keyframe = first.keyframe;
+    p.octave = keyframes_[size_t(first.keyframe)].keypoints[size_t(first.keypoint)].octave;
+  }
+}
+
+void Map::cull_point(int point) {
+  MapPoint& p = points_[size_t(point)];
+  for (const Observation& o : p.observations)
+    keyframes_[size_t(o.keyframe)].point_ids[size_t(o.keypoint)] = -1;
+  p.observations.clear();
+  p.bad = true;
+}
+
+void Map::replace_point(int duplicate, int survivor) {
+  if (duplicate == survivor) return;
+  MapPoint& dup = points_[size_t(duplicate)];
+  MapPoint& kept = points_[size_t(survivor)];
+  for (const Observation& o : dup.observations) {
+    int& link = keyframes_[size_t(o.keyframe)].point_ids[size_t(o.keypoint)];
+    const bool seen = std::any_of(kept.observations.begin(), kept.observations.end(),
+                                  [&](const Observation& k) { return k.keyframe == o.keyframe; });
+    if (seen) {
+      link = -1;
+    } else {
+      link = survivor;
+      kept.observations.push_back(o);
+    }
+  }
+  kept.visible += dup.visible;
+  kept.found += dup.found;
+  dup.observations.clear();
+  dup.bad = true;
+  update_point_descriptor(survivor);
+}
+
+void Map::update_connections(int keyframe) {
+  Keyframe& k = keyframes_[size_t(keyframe)];
+  std::map<int, int> shared;
+  for (int point : k.point_ids) {
+    if (point < 0) continue;
+    for (const Observation& o : points_[size_t(point)].observations)
+      if (o.keyframe != keyframe) ++shared[o.keyframe];
+  }
+  // Keyframes that no longer share anything drop their side of the link.
+  for (const auto& [other, weight] : k.shared_points)
+    if (!shared.count(other)) {
+      keyframes_[size_t(other)].shared_points.erase(keyframe);
+      sort_covisible(other);
+    }
+  k.shared_points = shared;
+  for (const auto& [other, weight] : shared) link(other, keyframe, weight);
+  sort_covisible(keyframe);
+
+  if (k.parent < 0 && keyframe > 0) {
+    // The spanning tree takes the best neighbour once; a keyframe sharing nothing (after a
+    // tracking failure) hangs from the previous one so that the tree stays connected.
+    k.parent = k.covisible.empty() ? keyframe - 1 : k.covisible.front();
+    keyframes_[size_t(k.parent)].children.push_back(keyframe);
+  }
+}
+
+void Map::link(int keyframe, int other, int weight) {
+  keyframes_[size_t(keyframe)].shared_points[other] = weight;
+  sort_covisible(keyframe);
+}
+
+void Map::sort_covisible(int keyframe) {
+  Keyframe& k = keyframes_[size_t(keyframe)];
+  std::vector<std::pair<int, int>> ranked;  // (-weight, keyframe): best first, then lowest id
+  for (const auto& [other, weight] : k.shared_points) ranked.push_back({-weight, other});
+  std::sort(ranked.begin(), ranked.end());
+  k.covisible.clear();
+  for (const auto& [negative_weight, other] : ranked)
+    if (-negative_weight >= covisibility_min_shared_) k.covisible.push_back(other);
+  // ORB-SLAM2: with no neighbour above the threshold, the best one is linked alone.
+  if (k.covisible.empty() && !ranked.empty()) k.covisible.push_back(ranked.front().second);
+}
+
+void Map::update_point_descriptor(int point) {
+  MapPoint& p = points_[size_t(point)];
+  const size_t n = p.observations.size();
+  if (n == 0) return;
+  std::vector<const uchar*> descriptors;
+  for (const Observation& o : p.observations)
+    descriptors.push_back(keyframes_[size_t(o.keyframe)].descriptors.ptr<uchar>(o.keypoint));
+  size_t best = 0;
+  int best_median = std::numeric_limits<int>::max();
+  std::vector<int> row(n);
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j)
+      row[j] = i == j ? 0 : descriptor_distance(descriptors[i], descriptors[j]);
+    std::nth_element(row.begin(), row.begin() + long((n - 1) / 2), row.end());
+    const int median = row[(n - 1) / 2];
+    if (median < best_median) best_median = median, best = i;
+  }
+  p.descriptor.create(1, kDescriptorBytes, CV_8U);
+  std::copy_n(descriptors[best], kDescriptorBytes, p.descriptor.ptr<uchar>());
+}
+
+void Map::update_point_geometry(int point) {
+  MapPoint& p = points_[size_t(point)];
+  if (p.observations.empty()) return;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (const Observation& o : p.observations)
+    normal += (p.p_w - keyframes_[size_t(o.keyframe)].centre()).normalized();
+  p.normal = normal / double(p.observations.size());
+  const Keyframe& reference = keyframes_[size_t(p.reference_keyframe)];
+  const double distance = (p.p_w - reference.centre()).norm();
+  p.max_distance = distance * pyramid_.scale(p.octave);
+  p.min_distance = p.max_distance / pyramid_.scale(pyramid_.levels - 1);
+}
+
+std::vector<int> Map::best_covisible(int keyframe, int count) const {
+  const std::vector<int>& all = keyframes_[size_t(keyframe)].covisible;
+  if (count <= 0 || size_t(count) >= all.size()) return all;
+  return {all.begin(), all.begin() + count};
+}
+
+int Map::predict_octave(const MapPoint& point, double distance) const {
+  if (distance <= 0 || point.max_distance <= 0) return point.octave;
+  const int octave = static_cast<int>(
+      std::ceil(std::log(point.max_distance / distance) / std::log(pyramid_.scale_factor)));
+  return std::clamp(octave, 0, pyramid_.levels - 1);
+}
+
+void Map::set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c) {
+  keyframes_[size_t(keyframe)].set_pose(T_w_c);
+}
+
+int Map::num_good_points() const {
+  return static_cast<int>(
+      std::count_if(points_.begin(), points_.end(), [](const MapPoint& p) { return !p.bad; }));
 }
 
 }  // namespace slamkit

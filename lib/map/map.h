@@ -1,6 +1,8 @@
 #pragma once
-// The map: keyframes and the landmarks they observe. Points are created from depth when a
-// keyframe is inserted (SPEC section 4: landmarks come from depth).
+// The map as data (stella_vslam's data/ layer): keyframes, map points with their observations,
+// the covisibility graph and the spanning tree, kept consistent with each other. What happens
+// to the map at a new keyframe (new points, culling, duplicate fusion, local BA) lives in
+// lib/mapping; the problems built from it in lib/optimization.
 #include <vector>
 
 #include "core/camera.h"
@@ -9,21 +11,66 @@
 
 namespace slamkit {
 
+// What the map needs of the feature pyramid to give a point its scale-valid distance range.
+struct PyramidGeometry {
+  int levels = 4;
+  double scale_factor = 1.2;
+  double scale(int octave) const;
+};
+
 class Map {
  public:
-  // Adds the keyframe; each keypoint with valid depth that observes no existing point
-  // (point_ids[i] == -1) makes a new point, back-projected with the keyframe's pose.
-  // Existing observed points count one more observation. Returns the keyframe's index.
-  size_t insert_keyframe(Keyframe keyframe, const Camera& camera);
+  explicit Map(PyramidGeometry pyramid = {}, int covisibility_min_shared = 15)
+      : pyramid_(pyramid), covisibility_min_shared_(covisibility_min_shared) {}
+
+  // Adds the keyframe as it is (its point_ids must be -1 or valid points it observes: those
+  // observations are added). Returns its index. The caller then makes new points
+  // (add_point) and calls update_connections.
+  int add_keyframe(Keyframe keyframe);
+  // A new point observed by keypoint `keypoint` of `keyframe`, which becomes its reference.
+  int add_point(const Eigen::Vector3d& p_w, int keyframe, int keypoint);
+
+  void add_observation(int point, int keyframe, int keypoint);
+  // Removes the point from the keyframe (and the keyframe's link to it); a point left with
+  // no observation is marked bad.
+  void erase_observation(int point, int keyframe);
+  // Marks the point bad and removes every observation of it.
+  void cull_point(int point);
+  // Merges `duplicate` into `survivor`: its observations move over (unless the survivor is
+  // already seen by that keyframe), its counters add, and it is marked bad.
+  void replace_point(int duplicate, int survivor);
+
+  // Recounts the points the keyframe shares with every other keyframe, links them in the
+  // covisibility graph (both ways) and, the first time, sets its parent in the spanning tree.
+  void update_connections(int keyframe);
+  // The representative descriptor, mean viewing direction and distance range of a point,
+  // from its current observations.
+  void update_point_descriptor(int point);
+  void update_point_geometry(int point);
+
+  // Up to `count` covisible neighbours, best first (count <= 0: all).
+  std::vector<int> best_covisible(int keyframe, int count) const;
+  // The octave at which a point at `distance` should be detected (ORB-SLAM2's PredictScale).
+  int predict_octave(const MapPoint& point, double distance) const;
+
+  void set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c);
+  void set_point_position(int point, const Eigen::Vector3d& p_w) { points_[size_t(point)].p_w = p_w; }
+  void count_visible(int point) { ++points_[size_t(point)].visible; }
+  void count_found(int point) { ++points_[size_t(point)].found; }
 
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+  const Keyframe& keyframe(int id) const { return keyframes_[size_t(id)]; }
   const std::vector<MapPoint>& points() const { return points_; }
   const MapPoint& point(int id) const { return points_[size_t(id)]; }
-
-  // Ids of the points observed by the last `count` keyframes, each once, ascending.
-  std::vector<int> local_point_ids(size_t count) const;
+  const PyramidGeometry& pyramid() const { return pyramid_; }
+  int num_good_points() const;
 
  private:
+  void link(int keyframe, int other, int weight);
+  void sort_covisible(int keyframe);
+
+  PyramidGeometry pyramid_;
+  int covisibility_min_shared_;
   std::vector<Keyframe> keyframes_;
   std::vector<MapPoint> points_;
 };

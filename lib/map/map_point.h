@@ -1,16 +1,35 @@
 #pragma once
-// A landmark: a 3D point seen in keyframes, with the descriptor that matches it.
+// A landmark: a 3D point, the keyframe keypoints that observe it, and what projection search
+// needs to find it again (ORBSLAM2_BACKEND.md section 1).
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace slamkit {
 
+struct Observation {
+  int keyframe = -1;  // index into Map::keyframes()
+  int keypoint = -1;  // index into that keyframe's keypoints
+};
+
 struct MapPoint {
   Eigen::Vector3d p_w = Eigen::Vector3d::Zero();  // world position, metres
-  cv::Mat descriptor;        // 1 x 32 CV_8U, from the keyframe that created the point
-  int octave = 0;            // pyramid level it was detected on
-  size_t first_keyframe = 0; // index into Map::keyframes()
-  int observations = 1;      // keyframes that saw it
+  // The observation descriptor with the least median Hamming distance to the others.
+  cv::Mat descriptor;                       // 1 x 32 CV_8U
+  std::vector<Observation> observations;    // one per keyframe, in insertion order
+  int reference_keyframe = -1;              // the keyframe that created it
+  int octave = 0;                           // of its keypoint in the reference keyframe
+  // Mean unit direction from the observing cameras to the point, and the distance range
+  // within which the pyramid can detect it (ORB-SLAM2's UpdateNormalAndDepth).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double min_distance = 0, max_distance = 0;
+  // Tracking counters for culling: frames whose view contained the point, frames that
+  // matched it as an inlier (both start at 1, as ORB-SLAM2's).
+  int visible = 1, found = 1;
+  bool bad = false;  // culled or merged away; its id stays, never reused
+
+  int num_observations() const { return static_cast<int>(observations.size()); }
+  double found_ratio() const { return double(found) / double(visible); }
 };
 
 }  // namespace slamkit

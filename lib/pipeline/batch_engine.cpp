@@ -3,7 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <future>
 
+#include "core/pose.h"
 #include "core/stopwatch.h"
 #include "keyframes/window_code.h"
 #include "pipeline/frame_preparation.h"
@@ -17,36 +19,124 @@ Trajectory RunResult::trajectory() const {
   return t;
 }
 
+Trajectory RunResult::tracked_trajectory() const {
+  Trajectory t;
+  for (size_t i = 0; i < frames.size(); ++i) t.push_back(frames[i].stamp, tracked_poses[i]);
+  return t;
+}
+
 Trajectory RunResult::keyframe_trajectory() const {
   Trajectory t;
   for (const Keyframe& k : map.keyframes()) t.push_back(k.stamp, k.T_w_c);
   return t;
 }
 
-RunResult run_batch(const TumSequence& sequence, const Settings& settings,
-                    const ProgressCallback& progress) {
+namespace {
+
+int thread_count(const Settings& settings) {
+  return settings.pipeline.threads > 0 ? settings.pipeline.threads : omp_get_num_procs();
+}
+
+Map empty_map(const Settings& settings) {
+  return Map({settings.orb.pyramid_levels, settings.orb.scale_factor},
+             settings.mapping.covisibility_min_shared);
+}
+
+}  // namespace
+
+RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
+                         const ProgressCallback& progress) {
+  Stopwatch total;
   RunResult result;
-  result.threads = settings.pipeline.threads > 0 ? settings.pipeline.threads : omp_get_num_procs();
+  result.map = empty_map(settings);
+  result.threads = thread_count(settings);
   omp_set_num_threads(result.threads);
   const Camera& camera = sequence.camera();
   const WindowPattern pattern({camera.width, camera.height}, settings.keyframes);
-  Tracker tracker(camera, settings);
+  Tracker tracker(camera, settings, result.map);
+  LocalMapper mapper(camera, settings, result.map);
   const size_t chunk = size_t(std::max(1, settings.pipeline.chunk_frames));
-  for (size_t begin = 0; begin < sequence.size(); begin += chunk) {
-    const size_t end = std::min(sequence.size(), begin + chunk);
+
+  // The next chunk is prepared while this one is tracked, so both cores stay busy. Frames
+  // are prepared independently, so the overlap changes no result. One thread: no overlap.
+  auto prepare = [&](size_t begin) {
+    omp_set_num_threads(result.threads);  // a new thread starts with OpenMP's defaults
     Stopwatch watch;
-    const std::vector<PreparedFrame> frames =
-        prepare_frames(sequence, begin, end, settings, pattern);
-    result.prepare_seconds += watch.lap() / 1000.0;
+    std::vector<PreparedFrame> frames = prepare_frames(
+        sequence, begin, std::min(sequence.size(), begin + chunk), settings, pattern);
+    return std::make_pair(std::move(frames), watch.lap() / 1000.0);
+  };
+  const auto policy = result.threads > 1 ? std::launch::async : std::launch::deferred;
+  std::future<std::pair<std::vector<PreparedFrame>, double>> next;
+  if (sequence.size() > 0) next = std::async(policy, prepare, size_t(0));
+  size_t last_keyframe_frame = 0;
+  for (size_t begin = 0; begin < sequence.size(); begin += chunk) {
+    auto [frames, prepare_seconds] = next.get();
+    result.seconds.prepare += prepare_seconds;
+    if (begin + chunk < sequence.size()) next = std::async(policy, prepare, begin + chunk);
+    Stopwatch watch;
     for (const PreparedFrame& frame : frames) {
-      result.frames.push_back(tracker.track(frame));
-      result.timing.push_back({frame.decode_ms, frame.features_ms, frame.window_code_ms});
-      if (progress) progress(result.frames.size(), sequence.size());
+      TrackedFrame record = tracker.track(frame);
+      FrameTiming timing{frame.decode_ms, frame.features_ms, frame.window_code_ms};
+      if (record.keyframe) {
+        std::vector<Eigen::Isometry3d> since_keyframe(result.tracked_poses.begin() +
+                                                          long(last_keyframe_frame),
+                                                      result.tracked_poses.end());
+        since_keyframe.push_back(record.T_w_c);
+        const double motion = quasi_static_motion(
+            since_keyframe, settings.optimization.local.motion_rotation_weight);
+        const MappingReport report =
+            mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
+        record.reference_keyframe = report.keyframe;
+        record.T_ref_c = Eigen::Isometry3d::Identity();
+        timing.mapping_ms = report.ms;
+        result.seconds.local_ba += report.ba.report.seconds;
+        result.keyframe_reports.push_back(report);
+        last_keyframe_frame = result.frames.size();
+      }
+      result.tracked_poses.push_back(record.T_w_c);
+      result.frames.push_back(std::move(record));
+      result.timing.push_back(timing);
+      if (progress) progress("track", result.frames.size(), sequence.size());
     }
-    result.track_seconds += watch.lap() / 1000.0;
+    result.seconds.track += watch.lap() / 1000.0;
   }
-  result.map = tracker.map();
+  // Local BA's corrections reach the frames tracked before them.
+  if (settings.optimization.local.enabled) reanchor_frames(result);
+  result.seconds.total = total.lap() / 1000.0;
   return result;
+}
+
+void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings) {
+  if (!settings.optimization.global.enabled || result.map.keyframes().size() < 2) return;
+  Stopwatch watch;
+  result.global_ba = adjust_whole_map(result.map, camera, settings.optimization);
+  result.global_ba_run = result.global_ba.report.solved;
+  result.seconds.global_ba = watch.lap() / 1000.0;
+}
+
+void reanchor_frames(RunResult& result) {
+  for (TrackedFrame& f : result.frames)
+    if (f.reference_keyframe >= 0)
+      f.T_w_c = orthonormalised(result.map.keyframe(f.reference_keyframe).T_w_c * f.T_ref_c);
+}
+
+void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
+                    const std::filesystem::path& ply_path, const ProgressCallback& progress) {
+  if (!settings.fusion.enabled) return;
+  Stopwatch watch;
+  std::vector<FusionFrame> frames;
+  if (settings.fusion.frame_step <= 0) {
+    for (const Keyframe& k : result.map.keyframes()) frames.push_back({k.frame_index, k.T_w_c});
+  } else {
+    for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
+      if (!result.frames[i].lost) frames.push_back({result.frames[i].index, result.frames[i].T_w_c});
+  }
+  result.fusion = fuse_map(sequence, frames, settings.fusion, ply_path,
+                           [&](size_t done, size_t total) {
+                             if (progress) progress("map", done, total);
+                           });
+  result.seconds.fusion = watch.lap() / 1000.0;
 }
 
 }  // namespace slamkit

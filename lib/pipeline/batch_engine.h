@@ -1,38 +1,71 @@
 #pragma once
-// The batch engine (DESIGN): reads a whole sequence, prepares frames in parallel chunks, and
-// tracks them in order. Later stages (bundle adjustment, loop closing, fusion) plug in after.
+// The batch engine (DESIGN): reads a whole sequence, prepares frames in parallel chunks (the
+// next chunk while the current one is tracked), tracks them in order with the map's upkeep
+// and local BA at each keyframe, then runs the global stages over the whole map.
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/settings/settings.h"
 #include "core/trajectory.h"
+#include "fusion/map_fusion.h"
 #include "io/tum_sequence.h"
 #include "map/map.h"
+#include "mapping/local_mapper.h"
 #include "tracking/tracked_frame.h"
 
 namespace slamkit {
 
 struct FrameTiming {
   double decode_ms = 0, features_ms = 0, window_code_ms = 0;  // parallel stage, per frame
+  double mapping_ms = 0;  // keyframe insertion and local BA (keyframes only)
+};
+
+// Wall time of each stage, seconds.
+struct StageTimes {
+  double prepare = 0;    // parallel stage, summed over chunks (overlaps tracking)
+  double track = 0;      // tracking and mapping, local BA included
+  double local_ba = 0;   // the local BA part of `track`
+  double global_ba = 0;
+  double fusion = 0;
+  double write = 0;
+  double total = 0;      // decode to the last file written
 };
 
 struct RunResult {
-  std::vector<TrackedFrame> frames;  // one per associated frame, in order
+  std::vector<TrackedFrame> frames;  // one per associated frame, in order; final poses
   std::vector<FrameTiming> timing;   // one per frame
+  std::vector<Eigen::Isometry3d> tracked_poses;  // as tracking produced them, per frame
+  std::vector<MappingReport> keyframe_reports;   // one per keyframe
   Map map;
-  double prepare_seconds = 0;  // wall time of the parallel stage
-  double track_seconds = 0;    // wall time of sequential tracking
+  MapAdjustment global_ba;  // empty unless the global BA ran
+  bool global_ba_run = false;
+  FusionReport fusion;      // frames == 0 unless the map was fused
+  StageTimes seconds;
   int threads = 1;
 
-  Trajectory trajectory() const;
+  Trajectory trajectory() const;          // final poses
+  Trajectory tracked_trajectory() const;  // before the back end's corrections reach frames
   Trajectory keyframe_trajectory() const;
 };
 
-// Called after each tracked frame with (frames done, total).
-using ProgressCallback = std::function<void(size_t, size_t)>;
+// Called with (stage, done, total): stage is "track", "global BA" or "map".
+using ProgressCallback = std::function<void(const std::string&, size_t, size_t)>;
 
+// Prepare, track (with local BA at each keyframe, if enabled): the front end's run.
 // Throws InputError for unreadable frames (naming the file).
-RunResult run_batch(const TumSequence& sequence, const Settings& settings,
-                    const ProgressCallback& progress = {});
+RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
+                         const ProgressCallback& progress = {});
+
+// Global BA over every keyframe and point (keyframe 0 fixed).
+void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings);
+
+// Every frame takes its reference keyframe's final pose composed with its pose relative to
+// that keyframe when it was tracked (keyframes take their own).
+void reanchor_frames(RunResult& result);
+
+// The fused map of the final poses, written to `ply_path` (settings.fusion).
+void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
+                    const std::filesystem::path& ply_path, const ProgressCallback& progress = {});
 
 }  // namespace slamkit

@@ -28,8 +28,8 @@ StageStats stats_of(const std::string& name, std::vector<double> values) {
 void write_tracking_csv(const fs::path& path, const RunResult& result) {
   std::ofstream out(path);
   out << "index,stamp,solver,features,matches,pairs_3d,inliers,refined,lost,failure,keyframe,"
-         "similarity,decode_ms,features_ms,window_code_ms,match_ms,pose_ms,refine_ms,"
-         "keyframe_ms\n";
+         "similarity,reference_keyframe,decode_ms,features_ms,window_code_ms,match_ms,pose_ms,"
+         "refine_ms,keyframe_ms,mapping_ms\n";
   char stamp[32];
   for (size_t i = 0; i < result.frames.size(); ++i) {
     const TrackedFrame& f = result.frames[i];
@@ -38,8 +38,25 @@ void write_tracking_csv(const fs::path& path, const RunResult& result) {
     out << f.index << ',' << stamp << ',' << solver_name(f.solver) << ',' << f.features << ','
         << f.matches << ',' << f.pairs_3d << ',' << f.inliers << ',' << int(f.refined) << ','
         << int(f.lost) << ',' << f.failure << ',' << int(f.keyframe) << ',' << f.similarity << ','
-        << t.decode_ms << ',' << t.features_ms << ',' << t.window_code_ms << ',' << f.match_ms
-        << ',' << f.pose_ms << ',' << f.refine_ms << ',' << f.keyframe_ms << '\n';
+        << f.reference_keyframe << ',' << t.decode_ms << ',' << t.features_ms << ','
+        << t.window_code_ms << ',' << f.match_ms << ',' << f.pose_ms << ',' << f.refine_ms << ','
+        << f.keyframe_ms << ',' << t.mapping_ms << '\n';
+  }
+  if (!out) throw_input_error(path.string(), "cannot write file");
+}
+
+void write_mapping_csv(const fs::path& path, const RunResult& result) {
+  std::ofstream out(path);
+  out << "keyframe,frame,new_points,culled_points,fused_points,local_ba,free_keyframes,"
+         "fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,ba_ms,mapping_ms\n";
+  const auto& keyframes = result.map.keyframes();
+  for (const MappingReport& r : result.keyframe_reports) {
+    const MapAdjustment& ba = r.ba;
+    out << r.keyframe << ',' << keyframes[size_t(r.keyframe)].frame_index << ',' << r.new_points
+        << ',' << r.culled_points << ',' << r.fused_points << ',' << int(r.ba_run) << ','
+        << ba.free_keyframes << ',' << ba.fixed_keyframes << ',' << ba.points << ','
+        << ba.observations << ',' << ba.report.iterations << ',' << ba.removed_observations << ','
+        << ba.report.seconds * 1000.0 << ',' << r.ms << '\n';
   }
   if (!out) throw_input_error(path.string(), "cannot write file");
 }
@@ -47,7 +64,7 @@ void write_tracking_csv(const fs::path& path, const RunResult& result) {
 }  // namespace
 
 TimingSummary summarise_timing(const RunResult& result) {
-  std::vector<double> decode, features, code, match, pose, refine, keyframe, tracking;
+  std::vector<double> decode, features, code, match, pose, refine, keyframe, mapping, tracking;
   for (size_t i = 0; i < result.frames.size(); ++i) {
     const TrackedFrame& f = result.frames[i];
     const FrameTiming& t = result.timing[i];
@@ -58,16 +75,17 @@ TimingSummary summarise_timing(const RunResult& result) {
     pose.push_back(f.pose_ms);
     refine.push_back(f.refine_ms);
     keyframe.push_back(f.keyframe_ms);
+    if (f.keyframe) mapping.push_back(t.mapping_ms);  // per keyframe, local BA included
     tracking.push_back(t.features_ms + t.window_code_ms + f.match_ms + f.pose_ms + f.refine_ms +
-                       f.keyframe_ms);
+                       f.keyframe_ms + t.mapping_ms);
   }
   TimingSummary s;
   s.stages = {stats_of("decode", decode),     stats_of("features", features),
               stats_of("window_code", code),  stats_of("match", match),
               stats_of("pose", pose),         stats_of("refine", refine),
-              stats_of("keyframe", keyframe)};
+              stats_of("keyframe", keyframe), stats_of("mapping", mapping)};
   s.tracking_median_ms = stats_of("tracking", tracking).median_ms;
-  const double wall = result.prepare_seconds + result.track_seconds;
+  const double wall = result.seconds.total;
   s.frames_per_second = wall > 0 ? double(result.frames.size()) / wall : 0;
   return s;
 }
@@ -96,24 +114,39 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name,
   fs::create_directories(dir);
   write_tum_trajectory(dir / "trajectory.txt", result.trajectory(),
                        "slamkit trajectory of " + sequence_name + " (T_w_c, every frame)");
+  if (settings.optimization.local.enabled || result.global_ba_run)
+    write_tum_trajectory(dir / "trajectory_tracked.txt", result.tracked_trajectory(),
+                         "slamkit trajectory of " + sequence_name +
+                             " as tracked, before the back end's corrections");
   write_tum_trajectory(dir / "keyframes.txt", result.keyframe_trajectory(),
                        "slamkit keyframes of " + sequence_name);
   write_tracking_csv(dir / "tracking.csv", result);
+  write_mapping_csv(dir / "mapping.csv", result);
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
+  write_timing_json(dir, sequence_name, result);
+}
 
+void write_timing_json(const fs::path& dir, const std::string& sequence_name,
+                       const RunResult& result) {
   const TimingSummary timing = summarise_timing(result);
+  const StageTimes& t = result.seconds;
   nlohmann::json json;
   json["sequence"] = sequence_name;
   json["frames"] = result.frames.size();
+  json["keyframes"] = result.map.keyframes().size();
   json["threads"] = result.threads;
-  json["prepare_seconds"] = result.prepare_seconds;
-  json["track_seconds"] = result.track_seconds;
+  json["seconds"] = {{"prepare", t.prepare}, {"track", t.track},        {"local_ba", t.local_ba},
+                     {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
+                     {"total", t.total}};
   json["frames_per_second"] = timing.frames_per_second;
   json["tracking_median_ms"] = timing.tracking_median_ms;
   for (const StageStats& s : timing.stages)
     json["stages"][s.name] = {{"median_ms", s.median_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
-  std::ofstream(dir / "timing.json") << json.dump(2) << "\n";
+  const fs::path path = dir / "timing.json";
+  std::ofstream out(path);
+  out << json.dump(2) << "\n";
+  if (!out) throw_input_error(path.string(), "cannot write file");
 }
 
 }  // namespace slamkit

@@ -1,6 +1,8 @@
 #pragma once
 // A run's folder (DESIGN): trajectory.txt and keyframes.txt (TUM format), tracking.csv (one
-// row a frame), settings.yaml and camera.yaml (to reproduce it), timing.json.
+// row a frame), mapping.csv (one row a keyframe), settings.yaml and camera.yaml (to reproduce
+// it), timing.json; with the back end, trajectory_tracked.txt (the poses before its
+// corrections reached the frames).
 #include <filesystem>
 #include <string>
 
@@ -12,6 +14,9 @@ namespace slamkit {
 
 void write_run_outputs(const std::filesystem::path& dir, const std::string& sequence_name,
                        const Camera& camera, const Settings& settings, const RunResult& result);
+// timing.json alone (write_run_outputs writes it too).
+void write_timing_json(const std::filesystem::path& dir, const std::string& sequence_name,
+                       const RunResult& result);
 
 // Per-stage statistics of a run, as written to timing.json.
 struct StageStats {

@@ -26,6 +26,11 @@ struct TrackedFrame {
   bool lost = false;     // the solvers failed; the pose is the motion model's
   std::string failure;   // why, when lost
   bool keyframe = false;
+  // The keyframe sharing most points with the frame (itself, for a keyframe) and the frame's
+  // pose relative to it when tracked: the back end's corrections of the keyframe carry over
+  // to the frame (re-anchoring), as ORB-SLAM2 writes its trajectory.
+  int reference_keyframe = -1;
+  Eigen::Isometry3d T_ref_c = Eigen::Isometry3d::Identity();
   double similarity = 1;  // zeta against the latest keyframe and its neighbours
   // Per-step wall time, milliseconds.
   double match_ms = 0, pose_ms = 0, refine_ms = 0, keyframe_ms = 0;

@@ -1,6 +1,7 @@
 #include "tracking/tracker.h"
 
 #include <algorithm>
+#include <map>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -8,6 +9,7 @@
 #include "core/stopwatch.h"
 #include "features/descriptor.h"
 #include "features/descriptor_matcher.h"
+#include "features/keypoint_grid.h"
 #include "features/projection_matcher.h"
 #include "keyframes/keyframe_rule.h"
 #include "tracking/failure_check.h"
@@ -18,8 +20,8 @@
 
 namespace slamkit {
 
-Tracker::Tracker(const Camera& camera, const Settings& settings)
-    : camera_(camera), settings_(settings) {
+Tracker::Tracker(const Camera& camera, const Settings& settings, Map& map)
+    : camera_(camera), settings_(settings), map_(map) {
   if (!camera_.distortion.is_zero()) {
     // Dense alignment works in pinhole geometry; the recorded depth is in the lens's.
     const cv::Matx33d K(camera_.fx, 0, camera_.cx, 0, camera_.fy, camera_.cy, 0, 0, 1);
@@ -40,7 +42,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
 
   if (poses_.empty()) {  // the first frame defines the world frame and the first keyframe
     record.keyframe = true;
-    insert_keyframe(frame, record.T_w_c, {});
+    inliers_.clear();
   } else {
     Stopwatch watch;
     const Eigen::Isometry3d guess = predict_pose(frame.stamp);
@@ -64,7 +66,8 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     }
     record.T_w_c = orthonormalised(estimate.T_w_c);
     record.inliers = int(estimate.inliers.size());
-    if (!record.lost) decide_and_insert_keyframe(frame, estimate.inliers, record);
+    settle_inliers(record.lost ? std::vector<Match>{} : estimate.inliers, record);
+    if (!record.lost) choose_keyframe(frame, record);
     record.keyframe_ms = watch.lap();
   }
   poses_.push_back({frame.stamp, record.T_w_c});
@@ -81,17 +84,59 @@ Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
   return predict_constant_velocity(poses_[poses_.size() - 2], poses_.back(), stamp);
 }
 
+std::vector<int> Tracker::local_keyframes() const {
+  // ORB-SLAM2's UpdateLocalKeyFrames: the keyframes that observe the last frame's points,
+  // most shared first, then their best covisible neighbours, up to the setting's count.
+  const size_t limit = size_t(std::max(1, settings_.mapping.local_map_keyframes));
+  std::map<int, int> votes;
+  for (const Match& m : inliers_)
+    for (const Observation& o : map_.point(m.point_id).observations) ++votes[o.keyframe];
+  std::vector<std::pair<int, int>> ranked;  // (-votes, keyframe)
+  for (const auto& [k, count] : votes) ranked.push_back({-count, k});
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<int> local;
+  auto add = [&](int k) {
+    if (local.size() < limit && std::find(local.begin(), local.end(), k) == local.end())
+      local.push_back(k);
+  };
+  add(int(map_.keyframes().size()) - 1);  // the latest keyframe's fresh points, always
+  for (const auto& [negative_votes, k] : ranked) add(k);
+  for (size_t i = 0; i < local.size() && local.size() < limit; ++i)
+    for (int k : map_.best_covisible(local[i], int(limit))) add(k);
+  return local;
+}
+
 std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
-                                                     const Eigen::Isometry3d& T_w_c_guess) const {
-  const std::vector<int> ids = map_.local_point_ids(size_t(settings_.tracking.local_map_keyframes));
+                                                     const Eigen::Isometry3d& T_w_c_guess) {
+  // The local map's points that the predicted view can see (ORB-SLAM2's isInFrustum: in front,
+  // in the image, within the scale-valid distances, seen within 60 deg of their mean view),
+  // each searched at the pyramid level its distance predicts.
+  const Eigen::Isometry3d T_c_w = T_w_c_guess.inverse();
+  const Eigen::Vector3d centre = T_w_c_guess.translation();
+  point_mark_.resize(map_.points().size(), size_t(-1));
+  std::vector<int> ids;
   MapPointSet points;
+  for (int k : local_keyframes())
+    for (int id : map_.keyframe(k).point_ids) {
+      if (id < 0 || point_mark_[size_t(id)] == frame.index) continue;
+      point_mark_[size_t(id)] = frame.index;
+      const MapPoint& p = map_.point(id);
+      if (p.bad) continue;
+      const Eigen::Vector3d p_c = T_c_w * p.p_w;
+      if (p_c.z() <= 0 || !camera_.contains(camera_.project(p_c))) continue;
+      const Eigen::Vector3d ray = p.p_w - centre;
+      const double distance = ray.norm();
+      if (distance < 0.8 * p.min_distance || distance > 1.2 * p.max_distance) continue;
+      if (ray.dot(p.normal) < settings_.mapping.min_view_cos * distance * p.normal.norm()) continue;
+      map_.count_visible(id);
+      ids.push_back(id);
+      points.points_w.push_back(p.p_w);
+      points.octaves.push_back(map_.predict_octave(p, distance));
+    }
   points.descriptors.create(int(ids.size()), kDescriptorBytes, CV_8U);
-  for (size_t k = 0; k < ids.size(); ++k) {
-    const MapPoint& p = map_.point(ids[k]);
-    points.points_w.push_back(p.p_w);
-    points.octaves.push_back(p.octave);
-    std::copy_n(p.descriptor.ptr<uchar>(), kDescriptorBytes, points.descriptors.ptr<uchar>(int(k)));
-  }
+  for (size_t k = 0; k < ids.size(); ++k)
+    std::copy_n(map_.point(ids[k]).descriptor.ptr<uchar>(), kDescriptorBytes,
+                points.descriptors.ptr<uchar>(int(k)));
   const KeypointGrid grid(frame.features.undistorted, settings_.matcher.grid_cell_size);
   MatcherSettings matcher = settings_.matcher;
   // After a failure the prediction is poor: search a wider window (ORB-SLAM2 widens too).
@@ -287,8 +332,22 @@ Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
   return predict_linear_velocity(velocities[0], velocities[1], poses_.back(), stamp);
 }
 
-void Tracker::decide_and_insert_keyframe(const PreparedFrame& frame,
-                                         const std::vector<Match>& inliers, TrackedFrame& record) {
+void Tracker::settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record) {
+  inliers_ = inliers;
+  std::map<int, int> votes;
+  for (const Match& m : inliers_) {
+    map_.count_found(m.point_id);
+    for (const Observation& o : map_.point(m.point_id).observations) ++votes[o.keyframe];
+  }
+  int best = 0;
+  for (const auto& [k, count] : votes)
+    if (count > best) best = count, reference_keyframe_ = k;
+  if (reference_keyframe_ < 0) reference_keyframe_ = int(map_.keyframes().size()) - 1;
+  record.reference_keyframe = reference_keyframe_;
+  record.T_ref_c = map_.keyframe(reference_keyframe_).T_c_w * record.T_w_c;
+}
+
+void Tracker::choose_keyframe(const PreparedFrame& frame, TrackedFrame& record) {
   const Keyframe& latest = map_.keyframes().back();
   std::vector<const WindowCode*> compared;
   for (size_t i : keyframe_neighbours(latest.frame_index, frame.index, settings_.keyframes))
@@ -296,30 +355,29 @@ void Tracker::decide_and_insert_keyframe(const PreparedFrame& frame,
   const int reference_points = int(std::count_if(latest.point_ids.begin(), latest.point_ids.end(),
                                                  [](int id) { return id >= 0; }));
   const KeyframeDecision decision = decide_keyframe(
-      frame.window_code, compared, int(inliers.size()), reference_points, settings_.keyframes);
+      frame.window_code, compared, int(inliers_.size()), reference_points, settings_.keyframes);
   record.similarity = decision.similarity;
   record.keyframe = decision.is_keyframe;
-  if (decision.is_keyframe) insert_keyframe(frame, record.T_w_c, inliers);
+  if (!record.keyframe) return;
+  // Codes older than the new keyframe's neighbours are never compared again.
+  const size_t n = size_t(std::max(0, settings_.keyframes.neighbour_frames));
+  window_codes_.erase(window_codes_.begin(),
+                      window_codes_.lower_bound(frame.index >= n ? frame.index - n : 0));
 }
 
-void Tracker::insert_keyframe(const PreparedFrame& frame, const Eigen::Isometry3d& T_w_c,
-                              const std::vector<Match>& inliers) {
+Keyframe Tracker::keyframe_from(const PreparedFrame& frame, const TrackedFrame& record) const {
   Keyframe keyframe;
   keyframe.frame_index = frame.index;
   keyframe.stamp = frame.stamp;
-  keyframe.T_w_c = T_w_c;
+  keyframe.T_w_c = record.T_w_c;
   keyframe.keypoints = frame.features.keypoints;
   keyframe.undistorted = frame.features.undistorted;
   keyframe.depths = frame.keypoint_depths;
   keyframe.descriptors = frame.features.descriptors;
   keyframe.point_ids.assign(frame.features.size(), -1);
   keyframe.window_code = frame.window_code;
-  for (const Match& m : inliers) keyframe.point_ids[size_t(m.keypoint)] = m.point_id;
-  map_.insert_keyframe(std::move(keyframe), camera_);
-  // Codes older than the new keyframe's neighbours are never compared again.
-  const size_t n = size_t(std::max(0, settings_.keyframes.neighbour_frames));
-  window_codes_.erase(window_codes_.begin(),
-                      window_codes_.lower_bound(frame.index >= n ? frame.index - n : 0));
+  for (const Match& m : inliers_) keyframe.point_ids[size_t(m.keypoint)] = m.point_id;
+  return keyframe;
 }
 
 cv::Mat Tracker::pinhole_depth(const cv::Mat& depth) const {

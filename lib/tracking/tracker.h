@@ -1,7 +1,9 @@
 #pragma once
 // The front end's state and its per-frame recipe (SPEC sections 2 and 3). Each step is a
 // solver function of its own (tracking/*.h); this class chooses between them and keeps what
-// must persist from frame to frame: the map, the recent poses, the keyframe codes.
+// must persist from frame to frame: the recent poses and the keyframe codes. It reads the map
+// (the local map is the covisible keyframes' points) and counts which points it saw; the
+// back end (lib/mapping) inserts the keyframes it asks for.
 #include <map>
 #include <vector>
 
@@ -16,18 +18,23 @@ namespace slamkit {
 
 class Tracker {
  public:
-  Tracker(const Camera& camera, const Settings& settings);
-
-  // Tracks the next frame (frames must come in order) and returns what happened.
-  TrackedFrame track(const PreparedFrame& frame);
-
-  const Map& map() const { return map_; }
-
- private:
   struct Match {
     int point_id;  // map point
     int keypoint;  // keypoint of the current frame
   };
+
+  Tracker(const Camera& camera, const Settings& settings, Map& map);
+
+  // Tracks the next frame (frames must come in order) and returns what happened. When the
+  // record says keyframe, the caller inserts keyframe_from(frame, record) into the map before
+  // the next frame.
+  TrackedFrame track(const PreparedFrame& frame);
+
+  // The keyframe the frame makes: its features and pose, its keypoints linked to the points
+  // tracking matched (the inliers of the last track() call).
+  Keyframe keyframe_from(const PreparedFrame& frame, const TrackedFrame& record) const;
+
+ private:
   struct PoseEstimate {
     Eigen::Isometry3d T_w_c;
     std::vector<Match> inliers;  // matches consistent with the pose
@@ -37,8 +44,9 @@ class Tracker {
   };
 
   Eigen::Isometry3d predict_pose(double stamp) const;
+  std::vector<int> local_keyframes() const;
   std::vector<Match> match_local_map(const PreparedFrame& frame,
-                                     const Eigen::Isometry3d& T_w_c_guess) const;
+                                     const Eigen::Isometry3d& T_w_c_guess);
   std::vector<Match> match_keyframe(const PreparedFrame& frame, const Keyframe& keyframe) const;
   std::vector<Match> match_for_relocalisation(const PreparedFrame& frame) const;
   bool accept(const PreparedFrame& frame, PoseEstimate& estimate, PoseSolver solver) const;
@@ -50,16 +58,18 @@ class Tracker {
                                     const Eigen::Isometry3d& T_w_c_guess) const;
   void refine_pose(const PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record) const;
   Eigen::Isometry3d motion_model_pose(double stamp) const;
-  void decide_and_insert_keyframe(const PreparedFrame& frame, const std::vector<Match>& inliers,
-                                  TrackedFrame& record);
-  void insert_keyframe(const PreparedFrame& frame, const Eigen::Isometry3d& T_w_c,
-                       const std::vector<Match>& inliers);
+  void choose_keyframe(const PreparedFrame& frame, TrackedFrame& record);
+  // Counts the inliers as found, and takes the keyframe sharing most of them as reference.
+  void settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record);
   // The depth image resampled to pinhole geometry (unchanged for undistorted cameras).
   cv::Mat pinhole_depth(const cv::Mat& depth) const;
 
   Camera camera_;
   Settings settings_;
-  Map map_;
+  Map& map_;
+  std::vector<Match> inliers_;   // of the last tracked frame
+  int reference_keyframe_ = -1;  // the keyframe sharing most points with the last frame
+  std::vector<size_t> point_mark_;  // per map point: last frame that listed it (local map)
   std::vector<StampedPose> poses_;             // every tracked frame, in order
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment

@@ -5,42 +5,146 @@
 namespace slamkit {
 namespace {
 
-// A keyframe of `n` keypoints at pixel (100 + i, 200) with depth 2 m, observing the given
-// existing points (-1: none, so a new point is made from depth).
-Keyframe keyframe_observing(const std::vector<int>& point_ids, size_t frame_index) {
+// A keyframe at `T_w_c` with `n` keypoints at pixel (100 + i, 200), octave `octave`, depth 2 m,
+// descriptors all zero unless set later.
+Keyframe keyframe_with(size_t n, size_t frame_index,
+                       const Eigen::Isometry3d& T_w_c = Eigen::Isometry3d::Identity(),
+                       int octave = 0) {
   Keyframe k;
   k.frame_index = frame_index;
-  for (size_t i = 0; i < point_ids.size(); ++i) {
-    k.keypoints.emplace_back(cv::Point2f(100.0f + float(i), 200.0f), 31.0f);
+  k.T_w_c = T_w_c;
+  for (size_t i = 0; i < n; ++i) {
+    cv::KeyPoint kp(cv::Point2f(100.0f + float(i), 200.0f), 31.0f);
+    kp.octave = octave;
+    k.keypoints.push_back(kp);
     k.undistorted.emplace_back(100.0 + double(i), 200.0);
     k.depths.push_back(2.0f);
   }
-  k.descriptors = cv::Mat(int(point_ids.size()), 32, CV_8U, cv::Scalar(0));
-  k.point_ids = point_ids;
+  k.descriptors = cv::Mat(int(n), 32, CV_8U, cv::Scalar(0));
+  k.point_ids.assign(n, -1);
   return k;
 }
 
-TEST(Map, KeyframesMakePointsFromDepthAndCountObservations) {
-  const Camera camera = Camera::freiburg3();
-  Map map;
-  map.insert_keyframe(keyframe_observing({-1, -1, -1}, 0), camera);  // points 0, 1, 2
-  map.insert_keyframe(keyframe_observing({2, -1}, 1), camera);       // sees 2, makes 3
-  ASSERT_EQ(map.points().size(), 4u);
-  EXPECT_EQ(map.keyframes()[1].point_ids, (std::vector<int>{2, 3}));
-  EXPECT_EQ(map.point(2).observations, map.point(0).observations + 1);
-  EXPECT_NEAR(map.point(0).p_w.z(), 2.0, 1e-12);  // identity pose: camera frame = world
+// A map of `keyframes` keyframes where keyframe k observes points [0, shared[k]) of keyframe 0.
+Map map_sharing(const std::vector<int>& shared, int min_shared = 15) {
+  Map map(PyramidGeometry{}, min_shared);
+  const int n = 40;
+  map.add_keyframe(keyframe_with(n, 0));
+  for (int i = 0; i < n; ++i) map.add_point(Eigen::Vector3d(0.01 * i, 0, 2), 0, i);
+  map.update_connections(0);
+  for (size_t k = 0; k < shared.size(); ++k) {
+    Keyframe kf = keyframe_with(n, k + 1);
+    for (int i = 0; i < shared[k]; ++i) kf.point_ids[size_t(i)] = i;
+    const int id = map.add_keyframe(std::move(kf));
+    map.update_connections(id);
+  }
+  return map;
 }
 
-TEST(Map, LocalPointsAreThoseOfTheLastKeyframesEachOnceAscending) {
-  const Camera camera = Camera::freiburg3();
-  Map map;
-  map.insert_keyframe(keyframe_observing({-1, -1, -1, -1}, 0), camera);  // 0..3
-  map.insert_keyframe(keyframe_observing({3, -1, 1}, 1), camera);        // 3, new 4, 1
-  map.insert_keyframe(keyframe_observing({4, -1, 3, -1}, 2), camera);    // 4, 5, 3, 6
-  EXPECT_EQ(map.local_point_ids(1), (std::vector<int>{3, 4, 5, 6}));
-  EXPECT_EQ(map.local_point_ids(2), (std::vector<int>{1, 3, 4, 5, 6}));
-  EXPECT_EQ(map.local_point_ids(10), (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
-  EXPECT_TRUE(Map().local_point_ids(3).empty());
+TEST(Map, ObservationsLinkKeypointsAndPointsBothWays) {
+  Map map = map_sharing({20});
+  EXPECT_EQ(map.point(3).num_observations(), 2);
+  EXPECT_EQ(map.point(30).num_observations(), 1);
+  EXPECT_EQ(map.keyframe(1).point_ids[3], 3);
+  EXPECT_EQ(map.keyframe(1).point_ids[30], -1);
+  map.erase_observation(3, 1);
+  EXPECT_EQ(map.keyframe(1).point_ids[3], -1);
+  EXPECT_EQ(map.point(3).num_observations(), 1);
+  EXPECT_FALSE(map.point(3).bad);
+  map.erase_observation(3, 0);  // the last observation: the point is gone
+  EXPECT_TRUE(map.point(3).bad);
+  EXPECT_EQ(map.num_good_points(), 39);
+}
+
+TEST(Map, CovisibilityLinksKeyframesSharingFifteenPointsWithTheirWeights) {
+  // Keyframes 1..3 share 20, 10 and 16 points with keyframe 0 (and so with each other).
+  const Map map = map_sharing({20, 10, 16});
+  EXPECT_EQ(map.keyframe(0).shared_points.at(1), 20);
+  EXPECT_EQ(map.keyframe(0).shared_points.at(2), 10);
+  EXPECT_EQ(map.keyframe(3).shared_points.at(1), 16);
+  EXPECT_EQ(map.keyframe(3).shared_points.at(2), 10);
+  // Best first; keyframe 2's 10 shared points are below 15.
+  EXPECT_EQ(map.keyframe(0).covisible, (std::vector<int>{1, 3}));
+  EXPECT_EQ(map.keyframe(1).covisible, (std::vector<int>{0, 3}));
+  // With no neighbour reaching 15, the best one is linked alone (ORB-SLAM2).
+  EXPECT_EQ(map.keyframe(2).covisible.size(), 1u);
+  EXPECT_EQ(map.best_covisible(0, 1), (std::vector<int>{1}));
+}
+
+TEST(Map, SpanningTreeParentIsTheBestNeighbourAtInsertion) {
+  const Map map = map_sharing({20, 10, 16});
+  EXPECT_EQ(map.keyframe(0).parent, -1);
+  EXPECT_EQ(map.keyframe(1).parent, 0);
+  EXPECT_EQ(map.keyframe(3).parent, 0);  // 0 and 1 both share 16: the lower index
+  EXPECT_EQ(map.keyframe(0).children, (std::vector<int>{1, 2, 3}));
+}
+
+TEST(Map, RepresentativeDescriptorHasTheLeastMedianDistance) {
+  Map map(PyramidGeometry{}, 15);
+  // Three views of one point: descriptors a, b, c with 0, 8 and 40 bits set. Each one's sorted
+  // distances, itself included: a {0, 8, 40}, b {0, 8, 32}, c {0, 32, 40}; the medians 8, 8
+  // and 32: a wins the tie by coming first.
+  const int bytes_set[3] = {0, 1, 5};
+  for (int k = 0; k < 3; ++k) {
+    Keyframe kf = keyframe_with(1, size_t(k));
+    for (int b = 0; b < bytes_set[k]; ++b) kf.descriptors.at<uchar>(0, b) = 0xFF;
+    if (k > 0) kf.point_ids[0] = 0;
+    map.add_keyframe(std::move(kf));
+    if (k == 0) map.add_point(Eigen::Vector3d(0, 0, 2), 0, 0);
+  }
+  map.update_point_descriptor(0);
+  EXPECT_EQ(cv::countNonZero(map.point(0).descriptor), 0);
+  // Without the first view, the 1-byte descriptor is the one closest to the rest.
+  map.erase_observation(0, 0);
+  map.update_point_descriptor(0);
+  EXPECT_EQ(cv::countNonZero(map.point(0).descriptor), 1);
+}
+
+TEST(Map, ViewingDirectionAndScaleValidDistanceRange) {
+  Map map(PyramidGeometry{4, 1.2}, 15);
+  map.add_keyframe(keyframe_with(1, 0, Eigen::Isometry3d::Identity(), /*octave=*/2));
+  const int p = map.add_point(Eigen::Vector3d(0, 0, 2), 0, 0);
+  Eigen::Isometry3d shifted = Eigen::Isometry3d::Identity();
+  shifted.translation() = Eigen::Vector3d(2, 0, 2);  // sees the point from +x
+  Keyframe second = keyframe_with(1, 1, shifted);
+  second.point_ids[0] = p;
+  map.add_keyframe(std::move(second));
+  map.update_point_geometry(p);
+  const MapPoint& point = map.point(p);
+  // Mean of the unit directions (0, 0, 1) and (-1, 0, 0), not re-normalised (ORB-SLAM2).
+  EXPECT_NEAR(point.normal.x(), -0.5, 1e-12);
+  EXPECT_NEAR(point.normal.z(), 0.5, 1e-12);
+  // From the reference keyframe: 2 m at octave 2, so max = 2 * 1.2^2, min = max / 1.2^3.
+  EXPECT_NEAR(point.max_distance, 2 * 1.44, 1e-12);
+  EXPECT_NEAR(point.min_distance, 2 * 1.44 / 1.728, 1e-12);
+  EXPECT_EQ(map.predict_octave(point, 2.01), 2);
+  EXPECT_EQ(map.predict_octave(point, 2 * 1.44), 0);
+  EXPECT_EQ(map.predict_octave(point, 0.5), 3);  // clamped to the last level
+}
+
+TEST(Map, ReplacingAPointMovesItsObservationsToTheSurvivor) {
+  Map map = map_sharing({20});
+  // Keyframe 1's keypoint 30 makes its own point for keyframe 0's point 30: a duplicate.
+  const int duplicate = map.add_point(Eigen::Vector3d(0.3, 0, 2), 1, 30);
+  map.replace_point(duplicate, 30);
+  EXPECT_TRUE(map.point(duplicate).bad);
+  EXPECT_EQ(map.keyframe(1).point_ids[30], 30);
+  EXPECT_EQ(map.point(30).num_observations(), 2);
+  // Replacing a point by one the same keyframe already sees drops the duplicate link only.
+  const int twin = map.add_point(Eigen::Vector3d(0.3, 0, 2), 1, 39);
+  map.replace_point(twin, 30);
+  EXPECT_EQ(map.keyframe(1).point_ids[39], -1);
+  EXPECT_EQ(map.point(30).num_observations(), 2);
+}
+
+TEST(Map, CullingAPointUnlinksEveryKeypoint) {
+  Map map = map_sharing({20});
+  map.cull_point(5);
+  EXPECT_TRUE(map.point(5).bad);
+  EXPECT_EQ(map.keyframe(0).point_ids[5], -1);
+  EXPECT_EQ(map.keyframe(1).point_ids[5], -1);
+  map.update_connections(1);
+  EXPECT_EQ(map.keyframe(1).shared_points.at(0), 19);
 }
 
 }  // namespace

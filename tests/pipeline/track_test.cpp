@@ -13,6 +13,7 @@
 #include "io/trajectory_io.h"
 #include "pipeline/batch_engine.h"
 #include "pipeline/run_output.h"
+#include "pipeline/run_pipeline.h"
 #include "support/test_data.h"
 
 namespace slamkit {
@@ -24,6 +25,11 @@ double ate_rmse(const Trajectory& gt, const Trajectory& estimate) {
   const auto pairs = eval::associate(gt, estimate, eval::AssociationOptions{});
   EXPECT_EQ(pairs.size(), estimate.size()) << "every frame must have groundtruth";
   return eval::compute_ate(gt, estimate, pairs, eval::AteOptions{}).trans.rmse;
+}
+
+// The front end alone, as `slamkit track` runs it.
+RunResult track_front_end(const TumSequence& seq, const Settings& settings = {}) {
+  return track_sequence(seq, front_end_only(settings));
 }
 
 int count_lost(const RunResult& r) {
@@ -54,7 +60,7 @@ TEST(Track, Fr2DeskFirst50WithinOrbSlam2Accuracy) {
   SequenceOptions options;
   options.depth_scale = 5208;  // ORB-SLAM2's Freiburg 2 depth correction, as its result used
   const TumSequence seq = TumSequence::open(folder, options);
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("fr2/desk first 50, depth scale 5208: ATE RMSE %.4f m\n", rmse);
@@ -64,7 +70,7 @@ TEST(Track, Fr2DeskFirst50WithinOrbSlam2Accuracy) {
 TEST(Track, Fr2DeskFirst50WithTheBenchmarkDepthScale) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg2_desk_first50");
   const TumSequence seq = TumSequence::open(folder);
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("fr2/desk first 50, depth scale 5000: ATE RMSE %.4f m\n", rmse);
@@ -75,7 +81,7 @@ TEST(Track, Fr2DeskFirst50WithTheBenchmarkDepthScale) {
 TEST(Track, Fr1DeskFastMotionDistortedCamera) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg1_desk_9frames");
   const TumSequence seq = TumSequence::open(folder);
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("fr1/desk 9 frames: ATE RMSE %.4f m\n", rmse);
@@ -98,7 +104,7 @@ TEST(Track, SameTrajectoryFileWithOneAndTwoThreads) {
     settings.pipeline.threads = threads;
     settings.pipeline.chunk_frames = 7 * threads;  // chunking must not matter either
     write_run_outputs(dir / std::to_string(threads), "fr2", seq.camera(), settings,
-                      run_batch(seq, settings));
+                      track_front_end(seq, settings));
   }
   const std::string one = file_text(dir / "1" / "trajectory.txt");
   EXPECT_GT(one.size(), 1000u);
@@ -108,7 +114,7 @@ TEST(Track, SameTrajectoryFileWithOneAndTwoThreads) {
 
 TEST(Track, SyntheticDeskCentimetreAccurateNoFrameLost) {
   const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kDesk, 600));
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   EXPECT_EQ(count_lost(result), 0);
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("synthetic desk 600: ATE RMSE %.4f m\n", rmse);
@@ -120,7 +126,7 @@ TEST(Track, SyntheticDeskCentimetreAccurateNoFrameLost) {
 TEST(Track, LowTextureWallCarriedByPointToPlane) {
   constexpr int kFrames = 600;
   const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kLowTexture, kFrames));
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   // The camera faces the plain corner from 32% to 72% of the sequence (trajectory_presets.cpp):
   // inside that stretch there are too few features for the closed form.
   const size_t wall_begin = size_t(0.35 * kFrames), wall_end = size_t(0.70 * kFrames);
@@ -139,7 +145,7 @@ TEST(Track, LowTextureWallCarriedByPointToPlane) {
 TEST(Track, JerkDetectedBridgedByMotionModelAndRecovered) {
   constexpr int kFrames = 120;
   const TumSequence seq = TumSequence::open(synthetic(synth::Preset::kJerk, kFrames));
-  const RunResult result = run_batch(seq, Settings{});
+  const RunResult result = track_front_end(seq);
   const int whip = synth::jerk_whip_frame(kFrames);
   int first_lost = -1, last_lost = -1;
   for (const TrackedFrame& f : result.frames)

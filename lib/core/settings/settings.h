@@ -1,8 +1,11 @@
 #pragma once
 // Every setting of a run, one struct per module, with the SPEC's defaults. A run writes the
 // settings it used (settings.yaml) so that any result can be reproduced.
+#include "core/settings/fusion_settings.h"
 #include "core/settings/keyframe_settings.h"
+#include "core/settings/mapping_settings.h"
 #include "core/settings/matcher_settings.h"
+#include "core/settings/optimization_settings.h"
 #include "core/settings/orb_settings.h"
 #include "core/settings/pipeline_settings.h"
 #include "core/settings/tracking_settings.h"
@@ -14,6 +17,9 @@ struct Settings {
   MatcherSettings matcher;
   TrackingSettings tracking;
   KeyframeSettings keyframes;
+  MappingSettings mapping;
+  OptimizationSettings optimization;
+  FusionSettings fusion;
   PipelineSettings pipeline;
 };
 

@@ -89,7 +89,6 @@ struct FailureSettings {
 
 struct TrackingSettings {
   int min_pairs_for_svd = 50;   // (paper) fewer valid 3D pairs: dense point-to-plane instead
-  int local_map_keyframes = 8;  // (ours) the local map: points of the last N keyframes
   // (ours) After a lost frame the predicted pose is poor: the projection search radius is
   // multiplied by this (ORB-SLAM2 widens its window likewise).
   double lost_search_radius_factor = 4;

@@ -1,0 +1,49 @@
+#pragma once
+// Bundle adjustment settings (SPEC section 4; ORB-SLAM2's numbers from ORBSLAM2_BACKEND.md
+// section 3 where the paper is silent).
+
+namespace slamkit {
+
+// The residuals every bundle adjustment shares: reprojection (u, v) plus, with depth, the
+// virtual-stereo disparity bf / z (ORB-SLAM2's RGB-D u_right term), each divided by the
+// keypoint's scale sigma = scale_factor^octave.
+struct BaResidualSettings {
+  bool use_depth = true;   // (beyond) the depth residual; false = reprojection only (paper)
+  double virtual_bf = 40;  // (ORB-SLAM2) "Camera.bf" of its TUM settings: fx * 7.7 cm
+  double chi2_2d = 5.991;  // (ORB-SLAM2) 95% chi-square, 2 dof: outlier test and Huber delta^2
+  double chi2_3d = 7.815;  // (ORB-SLAM2) 95% chi-square, 3 dof
+};
+
+// Local BA at each new keyframe: the keyframe and its covisible neighbours move, keyframes
+// that see the same points but are not neighbours stay fixed.
+struct LocalBaSettings {
+  bool enabled = true;
+  int robust_iterations = 5;   // (ORB-SLAM2) LM iterations with the Huber kernel (paper: Huber)
+  int refine_iterations = 10;  // (ORB-SLAM2) after removing outliers, without the kernel
+  // (paper) Landmarks come from depth: after this many iterations they are held fixed and only
+  // the poses move; -1 = never fixed (ORB-SLAM2).
+  int fix_points_after_iterations = 2;
+  // (paper) Quasi-static skip: s_e = sum |t_i|^2 + w_e sum |angles_i|^2 over the consecutive
+  // frames since the last keyframe; optimise only when s_e >= min_motion.
+  double motion_rotation_weight = 15;  // (paper) w_e
+  double min_motion = 1e-4;            // (paper)
+  int max_covisible_keyframes = 0;     // 0 = every covisible neighbour (ORB-SLAM2)
+};
+
+// Global BA after tracking: every keyframe and point, the first keyframe fixed.
+struct GlobalBaSettings {
+  bool enabled = true;  // (design card)
+  int iterations = 10;  // (ORB-SLAM2) LM iterations
+  // (beyond) Huber kernel and an outlier pass as in local BA; false = ORB-SLAM2's plain
+  // least squares over every observation.
+  bool robust = true;
+  int refine_iterations = 10;  // (ours) after removing outliers (robust only)
+};
+
+struct OptimizationSettings {
+  BaResidualSettings residual;
+  LocalBaSettings local;
+  GlobalBaSettings global;
+};
+
+}  // namespace slamkit

@@ -1,0 +1,119 @@
+#include "mapping/local_mapper.h"
+
+#include <algorithm>
+#include <set>
+
+#include "core/stopwatch.h"
+#include "mapping/duplicate_fusion.h"
+
+namespace slamkit {
+
+LocalMapper::LocalMapper(const Camera& camera, const Settings& settings, Map& map)
+    : camera_(camera), settings_(settings), map_(map) {}
+
+MappingReport LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
+  Stopwatch watch;
+  MappingReport report;
+  const int id = map_.add_keyframe(std::move(keyframe));
+  report.keyframe = id;
+  // The tracked points' descriptors and viewing directions now include this view.
+  for (int point : map_.keyframe(id).point_ids)
+    if (point >= 0) {
+      map_.update_point_descriptor(point);
+      map_.update_point_geometry(point);
+    }
+  report.new_points = create_points(id);
+  map_.update_connections(id);
+  report.culled_points = cull_recent_points(id);
+  if (settings_.mapping.fuse_duplicates) report.fused_points = fuse_duplicates(id);
+
+  const LocalBaSettings& ba = settings_.optimization.local;
+  if (ba.enabled && id >= 2 && motion >= ba.min_motion) {
+    report.ba = adjust_local_window(map_, id, camera_, settings_.optimization);
+    report.ba_run = report.ba.report.solved;
+  }
+  report.ms = watch.lap();
+  return report;
+}
+
+int LocalMapper::create_points(int keyframe) {
+  // SPEC: landmarks come from depth. Every keypoint with valid depth and no point yet.
+  int created = 0;
+  const size_t n = map_.keyframe(keyframe).keypoints.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Keyframe& k = map_.keyframe(keyframe);
+    if (k.point_ids[i] >= 0 || k.depths[i] <= 0) continue;
+    const Eigen::Vector3d p_w = k.T_w_c * camera_.back_project(k.undistorted[i], k.depths[i]);
+    recent_points_.push_back(map_.add_point(p_w, keyframe, static_cast<int>(i)));
+    ++created;
+  }
+  return created;
+}
+
+int LocalMapper::cull_recent_points(int keyframe) {
+  // ORB-SLAM2's MapPointCulling: points on probation leave the list after 3 keyframes.
+  const MappingSettings& s = settings_.mapping;
+  int culled = 0;
+  std::vector<int> kept;
+  for (int id : recent_points_) {
+    const MapPoint& p = map_.point(id);
+    if (p.bad) continue;
+    const int age = keyframe - p.reference_keyframe;
+    if (p.found_ratio() < s.min_found_ratio ||
+        (age >= s.cull_after_keyframes && p.num_observations() < s.min_observations)) {
+      map_.cull_point(id);
+      ++culled;
+    } else if (age < s.cull_after_keyframes + 1) {
+      kept.push_back(id);
+    }
+  }
+  recent_points_ = std::move(kept);
+  return culled;
+}
+
+int LocalMapper::fuse_duplicates(int keyframe) {
+  const MappingSettings& s = settings_.mapping;
+  FusionGates gates;
+  gates.radius = s.fuse_radius;
+  gates.max_distance = s.fuse_max_distance;
+  gates.min_view_cos = s.min_view_cos;
+  gates.chi2_2d = settings_.optimization.residual.chi2_2d;
+  gates.chi2_3d = settings_.optimization.residual.chi2_3d;
+  gates.virtual_bf = settings_.optimization.residual.virtual_bf;
+
+  const std::vector<int> targets = map_.best_covisible(keyframe, s.fuse_neighbours);
+  auto points_of = [&](int k) {
+    std::vector<int> ids;
+    for (int id : map_.keyframe(k).point_ids)
+      if (id >= 0 && !map_.point(id).bad) ids.push_back(id);
+    return ids;
+  };
+  int fused = 0;
+  // The new keyframe's points into each neighbour, then the neighbours' points into it.
+  for (int target : targets) fused += fuse_into_keyframe(map_, target, points_of(keyframe), camera_, gates);
+  std::set<int> theirs;
+  for (int target : targets)
+    for (int id : points_of(target)) theirs.insert(id);
+  fused += fuse_into_keyframe(map_, keyframe, {theirs.begin(), theirs.end()}, camera_, gates);
+
+  for (int id : points_of(keyframe)) {
+    map_.update_point_descriptor(id);
+    map_.update_point_geometry(id);
+  }
+  map_.update_connections(keyframe);
+  for (int target : targets) map_.update_connections(target);
+  return fused;
+}
+
+double quasi_static_motion(const std::vector<Eigen::Isometry3d>& poses, double rotation_weight) {
+  double s = 0;
+  for (size_t i = 1; i < poses.size(); ++i) {
+    const Eigen::Isometry3d step = poses[i - 1].inverse() * poses[i];
+    const Eigen::AngleAxisd angle_axis(step.rotation());
+    s += step.translation().squaredNorm() +
+         rotation_weight * (angle_axis.angle() * angle_axis.axis()).squaredNorm();
+  }
+  return s;
+}
+
+}  // namespace slamkit

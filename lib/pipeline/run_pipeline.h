@@ -1,0 +1,20 @@
+#pragma once
+// `slamkit run`: the whole batch in the design card's order, one line a stage.
+#include <filesystem>
+#include <string>
+
+#include "pipeline/batch_engine.h"
+
+namespace slamkit {
+
+// Prepare and track (local BA at each keyframe), global BA, re-anchor every frame, fuse the
+// map (out/map.ply), write the run folder. Evaluation, which needs nothing of the engine,
+// is the caller's (eval/).
+RunResult run_batch(const TumSequence& sequence, const Settings& settings,
+                    const std::filesystem::path& out, const std::string& sequence_name,
+                    const ProgressCallback& progress = {});
+
+// The settings of the front end alone (`slamkit track`): no local or global BA, no map.
+Settings front_end_only(Settings settings);
+
+}  // namespace slamkit
