@@ -15,8 +15,8 @@ struct BaIntrinsics {
 };
 
 struct BaObservation {
-  int pose = -1;   // index into BaProblem::T_c_w
-  int point = -1;  // index into BaProblem::p_w
+  int pose = -1;                                 // index into BaProblem::T_c_w
+  int point = -1;                                // index into BaProblem::p_w
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();  // undistorted keypoint, pixels
   double depth = 0;  // measured depth at the keypoint, metres; <= 0 = none (2D residual)
   double sigma = 1;  // keypoint standard deviation, pixels (scale_factor^octave)
@@ -30,11 +30,11 @@ struct BaProblem {
 };
 
 struct BaReport {
-  bool solved = false;          // false: nothing to optimise (or Ceres failed); input unchanged
-  int iterations = 0;           // LM iterations over all phases
-  double initial_cost = 0;      // Ceres cost before and after
+  bool solved = false;      // false: nothing to optimise (or Ceres failed); input unchanged
+  int iterations = 0;       // LM iterations over all phases
+  double initial_cost = 0;  // Ceres cost before and after
   double final_cost = 0;
-  std::vector<bool> outlier;    // per observation: failed the chi-square test at the end
+  std::vector<bool> outlier;  // per observation: failed the chi-square test at the end
   int num_outliers = 0;
   double seconds = 0;
 };

@@ -1,0 +1,211 @@
+#include "optimization/ba_solver.h"
+
+#include <ceres/ordered_groups.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace slamkit {
+namespace {
+
+// Ceres' default Schur ordering puts the points first anyway; stating it keeps the reduced
+// system on the poses whatever Ceres' heuristics decide.
+constexpr int kPointGroup = 0;
+constexpr int kPoseGroup = 1;
+
+ceres::Solver::Options solver_options(int iterations) {
+  ceres::Solver::Options options;
+  options.minimizer_type = ceres::TRUST_REGION;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.max_num_iterations = iterations;
+  // Exactly the scheduled number of iterations (as ORB-SLAM2's g2o runs): no relative-change
+  // stop, so the iteration count, and with it the result, never hinges on how close a
+  // tolerance test came to passing. A solve still ends early on an exactly zero gradient or
+  // step.
+  options.function_tolerance = 0;
+  options.gradient_tolerance = 0;
+  options.parameter_tolerance = 0;
+  // One thread: Ceres' multi-threaded evaluation and Schur elimination sum in a
+  // thread-dependent order, so only this is bit-reproducible.
+  options.num_threads = 1;
+  options.minimizer_progress_to_stdout = false;
+  options.logging_type = ceres::SILENT;
+  return options;
+}
+
+}  // namespace
+
+BaSolver::BaSolver(const BaProblem& problem, const BaIntrinsics& intrinsics,
+                   const BaResidualSettings& residual)
+    : observations_(problem.observations),
+      pose_fixed_(problem.pose_fixed),
+      num_poses_(static_cast<int>(problem.T_c_w.size())),
+      num_points_(static_cast<int>(problem.p_w.size())),
+      parameters_(7 * num_poses_ + 3 * num_points_),
+      settings_(residual),
+      huber_2d_(std::sqrt(residual.chi2_2d)),
+      huber_3d_(std::sqrt(residual.chi2_3d)) {
+  if (static_cast<int>(pose_fixed_.size()) != num_poses_) {
+    throw std::invalid_argument("bundle adjustment: pose_fixed has " +
+                                std::to_string(pose_fixed_.size()) + " entries for " +
+                                std::to_string(num_poses_) + " poses");
+  }
+  for (int i = 0; i < num_poses_; ++i) {
+    const Eigen::Quaterniond q(problem.T_c_w[i].linear());
+    Eigen::Map<Eigen::Quaterniond>(rotation(i)) = q.normalized();
+    Eigen::Map<Eigen::Vector3d>(translation(i)) = problem.T_c_w[i].translation();
+  }
+  for (int i = 0; i < num_points_; ++i) Eigen::Map<Eigen::Vector3d>(point(i)) = problem.p_w[i];
+
+  residuals_.reserve(observations_.size());
+  for (const BaObservation& o : observations_) {
+    if (o.pose < 0 || o.pose >= num_poses_ || o.point < 0 || o.point >= num_points_) {
+      throw std::invalid_argument("bundle adjustment: observation of pose " +
+                                  std::to_string(o.pose) + ", point " + std::to_string(o.point) +
+                                  " out of range");
+    }
+    const double depth = residual.use_depth ? o.depth : 0.0;
+    residuals_.push_back(
+        std::make_unique<BaResidual>(o.uv, depth, o.sigma, intrinsics, residual.virtual_bf));
+  }
+  inlier_.resize(observations_.size());
+  double unused;
+  for (size_t i = 0; i < observations_.size(); ++i) inlier_[i] = chi2(static_cast<int>(i), unused);
+}
+
+bool BaSolver::solvable() const {
+  if (observations_.empty()) return false;
+  for (bool fixed : pose_fixed_) {
+    if (!fixed) return true;
+  }
+  return false;
+}
+
+bool BaSolver::run(int iterations, bool robust, bool points_free) {
+  if (iterations <= 0) return true;
+  ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  // Every block is added exactly once below; the checks would cost a hash lookup per block.
+  problem_options.disable_all_safety_checks = true;
+  ceres::Problem problem(problem_options);
+  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+
+  const auto takes_part = [&](size_t i) {
+    return inlier_[i] && (points_free || !pose_fixed_[observations_[i].pose]);
+  };
+  // A free point needs two observations or a depth: one pixel alone leaves it free along its
+  // ray, which lets LM take huge steps there (through the camera) and slows everything else,
+  // while it cannot move any pose at the optimum. Such points sit this run out.
+  std::vector<bool> point_determined(num_points_, !points_free);
+  if (points_free) {
+    std::vector<bool> seen(num_points_);
+    for (size_t i = 0; i < observations_.size(); ++i) {
+      if (!takes_part(i)) continue;
+      const int j = observations_[i].point;
+      point_determined[j] = point_determined[j] || seen[j] || residuals_[i]->dimension() == 3;
+      seen[j] = true;
+    }
+  }
+
+  // Blocks enter the problem with their first residual: a point whose observations are all
+  // outliers is not in it at all.
+  std::vector<bool> pose_added(pose_fixed_.size()), point_added(num_points_);
+  for (size_t i = 0; i < observations_.size(); ++i) {
+    const BaObservation& o = observations_[i];
+    if (!takes_part(i) || !point_determined[o.point]) continue;
+    ceres::LossFunction* loss = nullptr;
+    if (robust) loss = residuals_[i]->dimension() == 3 ? &huber_3d_ : &huber_2d_;
+    problem.AddResidualBlock(residuals_[i].get(), loss, rotation(o.pose), translation(o.pose),
+                             point(o.point));
+    if (!pose_added[o.pose]) {
+      pose_added[o.pose] = true;
+      problem.SetManifold(rotation(o.pose), &quaternion_manifold_);
+      if (pose_fixed_[o.pose]) {
+        problem.SetParameterBlockConstant(rotation(o.pose));
+        problem.SetParameterBlockConstant(translation(o.pose));
+      }
+      ordering->AddElementToGroup(rotation(o.pose), kPoseGroup);
+      ordering->AddElementToGroup(translation(o.pose), kPoseGroup);
+    }
+    if (!point_added[o.point]) {
+      point_added[o.point] = true;
+      if (!points_free) problem.SetParameterBlockConstant(point(o.point));
+      ordering->AddElementToGroup(point(o.point), kPointGroup);
+    }
+  }
+  if (problem.NumResidualBlocks() == 0) return true;
+
+  ceres::Solver::Options options = solver_options(iterations);
+  if (points_free) {
+    options.linear_solver_type = ceres::SPARSE_SCHUR;
+    options.linear_solver_ordering = ordering;
+  } else {
+    // Nothing to eliminate: the normal equations are block diagonal over the free poses.
+    options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  }
+  ceres::Solver::Summary summary;
+  const std::vector<double> before = parameters_;
+  ceres::Solve(options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) {
+    parameters_ = before;
+    return false;
+  }
+  if (!has_run_) initial_cost_ = summary.initial_cost;
+  has_run_ = true;
+  final_cost_ = summary.final_cost;
+  iterations_ += static_cast<int>(summary.iterations.size()) - 1;  // [0]: the starting point
+  return true;
+}
+
+bool BaSolver::chi2(int observation, double& value) const {
+  const BaObservation& o = observations_[observation];
+  const double* parameters[] = {rotation(o.pose), translation(o.pose), point(o.point)};
+  Eigen::Vector3d r;
+  if (!residuals_[observation]->Evaluate(parameters, r.data(), nullptr)) return false;
+  value = r.squaredNorm();
+  return true;
+}
+
+void BaSolver::classify() {
+  for (size_t i = 0; i < observations_.size(); ++i) {
+    if (!inlier_[i]) continue;
+    const double threshold =
+        residuals_[i]->dimension() == 3 ? settings_.chi2_3d : settings_.chi2_2d;
+    double value;
+    inlier_[i] = chi2(static_cast<int>(i), value) && value <= threshold;
+  }
+}
+
+BaReport BaSolver::report() const {
+  BaReport report;
+  report.solved = true;
+  report.iterations = iterations_;
+  report.initial_cost = initial_cost_;
+  report.final_cost = final_cost_;
+  report.outlier.resize(inlier_.size());
+  for (size_t i = 0; i < inlier_.size(); ++i) {
+    report.outlier[i] = !inlier_[i];
+    report.num_outliers += report.outlier[i];
+  }
+  return report;
+}
+
+void BaSolver::write_back(BaProblem& problem) const {
+  for (size_t i = 0; i < problem.T_c_w.size(); ++i) {
+    if (pose_fixed_[i]) continue;
+    const int pose = static_cast<int>(i);
+    const Eigen::Quaterniond q = Eigen::Map<const Eigen::Quaterniond>(rotation(pose)).normalized();
+    problem.T_c_w[i].linear() = q.toRotationMatrix();
+    problem.T_c_w[i].translation() = Eigen::Map<const Eigen::Vector3d>(translation(pose));
+  }
+  for (size_t i = 0; i < problem.p_w.size(); ++i) {
+    problem.p_w[i] = Eigen::Map<const Eigen::Vector3d>(point(static_cast<int>(i)));
+  }
+}
+
+}  // namespace slamkit

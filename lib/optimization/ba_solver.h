@@ -1,0 +1,80 @@
+#pragma once
+// What local and global BA share: a BaProblem's parameters in Ceres' layout, one residual per
+// observation, Levenberg-Marquardt runs over the observations currently taken as inliers, the
+// chi-square classification and the write-back. Each schedule (local_bundle_adjustment.cpp,
+// global_bundle_adjustment.cpp) is a few calls on this.
+#include <ceres/loss_function.h>
+#include <ceres/manifold.h>
+
+#include <memory>
+#include <vector>
+
+#include "optimization/ba_residual.h"
+#include "optimization/bundle_adjustment.h"
+
+namespace slamkit {
+
+class BaSolver {
+ public:
+  // Copies the parameters out of `problem` (which is only read again by write_back). At the
+  // start every observation whose point is in front of its camera is an inlier (ORB-SLAM2
+  // starts with every edge; one behind the camera cannot be evaluated). Throws
+  // std::invalid_argument when an observation names a pose or point that does not exist or
+  // pose_fixed does not match T_c_w.
+  BaSolver(const BaProblem& problem, const BaIntrinsics& intrinsics,
+           const BaResidualSettings& residual);
+
+  // Something to optimise: at least one free pose and one observation.
+  bool solvable() const;
+
+  // Up to `iterations` LM iterations over the inlier observations, with the Huber kernel when
+  // `robust`. With `points_free` the points move too (Schur on the points); otherwise the
+  // points are constant and only observations of free poses take part. False when Ceres
+  // failed (the parameters are then those before the call).
+  bool run(int iterations, bool robust, bool points_free);
+
+  // Re-tests the inliers at the current parameters: one stays an inlier when its point is in
+  // front of the camera and chi2 <= chi2_2d / chi2_3d. An outlier stays out (as in ORB-SLAM2,
+  // whose excluded edges keep failing on their stale chi2), so the last run's observations are
+  // exactly the final inliers plus those this test rejects after it.
+  void classify();
+
+  // Iterations run, costs of the first and last run, outlier = not an inlier now.
+  BaReport report() const;
+
+  // Free poses (rotation orthonormal) and all points into `problem`; fixed poses untouched.
+  void write_back(BaProblem& problem) const;
+
+ private:
+  double* rotation(int pose) { return &parameters_[7 * pose]; }
+  double* translation(int pose) { return &parameters_[7 * pose + 4]; }
+  double* point(int index) { return &parameters_[7 * num_poses_ + 3 * index]; }
+  const double* rotation(int pose) const { return &parameters_[7 * pose]; }
+  const double* translation(int pose) const { return &parameters_[7 * pose + 4]; }
+  const double* point(int index) const { return &parameters_[7 * num_poses_ + 3 * index]; }
+  // The observation's chi2 at the current parameters; false when it cannot be evaluated.
+  bool chi2(int observation, double& value) const;
+
+  std::vector<BaObservation> observations_;
+  std::vector<bool> pose_fixed_;
+  int num_poses_;
+  int num_points_;
+  // One array: per pose the Eigen quaternion (x, y, z, w) of R_c_w and t_c_w, then per point
+  // p_w. Ceres orders the blocks of an elimination group by address, so with a single array
+  // that order is the index order whatever the heap does, and results are bit-reproducible.
+  std::vector<double> parameters_;
+  std::vector<std::unique_ptr<BaResidual>> residuals_;
+  std::vector<bool> inlier_;
+  BaResidualSettings settings_;
+  // Shared by every residual block and Problem: the Problems do not take ownership.
+  ceres::HuberLoss huber_2d_;
+  ceres::HuberLoss huber_3d_;
+  ceres::EigenQuaternionManifold quaternion_manifold_;
+
+  int iterations_ = 0;
+  bool has_run_ = false;
+  double initial_cost_ = 0;
+  double final_cost_ = 0;
+};
+
+}  // namespace slamkit
