@@ -15,6 +15,11 @@ namespace {
 // system on the poses whatever Ceres' heuristics decide.
 constexpr int kPointGroup = 0;
 constexpr int kPoseGroup = 1;
+// Up to this many free poses the reduced camera system (6 per pose) is factorised densely:
+// for a local window that costs well under a millisecond, less than SPARSE_SCHUR's symbolic
+// analysis at every Solve (measured: 2.6 against 8-10 ms of preprocessing per Solve on the
+// 20-keyframe window). Whole-map problems stay sparse.
+constexpr int kMaxDenseSchurPoses = 30;
 
 ceres::Solver::Options solver_options(int iterations) {
   ceres::Solver::Options options;
@@ -115,6 +120,7 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   // Blocks enter the problem with their first residual: a point whose observations are all
   // outliers is not in it at all.
   std::vector<bool> pose_added(pose_fixed_.size()), point_added(num_points_);
+  int free_poses = 0;
   for (size_t i = 0; i < observations_.size(); ++i) {
     const BaObservation& o = observations_[i];
     if (!takes_part(i) || !point_determined[o.point]) continue;
@@ -128,6 +134,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
       if (pose_fixed_[o.pose]) {
         problem.SetParameterBlockConstant(rotation(o.pose));
         problem.SetParameterBlockConstant(translation(o.pose));
+      } else {
+        ++free_poses;
       }
       ordering->AddElementToGroup(rotation(o.pose), kPoseGroup);
       ordering->AddElementToGroup(translation(o.pose), kPoseGroup);
@@ -142,7 +150,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
 
   ceres::Solver::Options options = solver_options(iterations);
   if (points_free) {
-    options.linear_solver_type = ceres::SPARSE_SCHUR;
+    options.linear_solver_type =
+        free_poses <= kMaxDenseSchurPoses ? ceres::DENSE_SCHUR : ceres::SPARSE_SCHUR;
     options.linear_solver_ordering = ordering;
   } else {
     // Nothing to eliminate: the normal equations are block diagonal over the free poses.
