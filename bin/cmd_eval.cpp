@@ -37,12 +37,26 @@ struct CompareArgs {
 void add_common_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (TUM format)")->required();
   cmd->add_option("estimate", a.est, "Estimated trajectory (TUM format)")->required();
-  cmd->add_option("--max-diff", a.max_diff, "Association tolerance in seconds")
+  cmd->add_option("--convention", a.convention,
+                  "tum (the benchmark scripts) or evo: sets association, --max-diff, "
+                  "--duplicate-stamps and --rpe-convention unless given")
+      ->check(CLI::IsMember({"tum", "evo"}))
       ->capture_default_str();
+  cmd->add_option_function<double>(
+         "--max-diff", [&a](const double& v) { a.max_diff = v; },
+         "Association tolerance in seconds (default 0.02, evo: 0.01)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--offset", a.offset, "Time offset added to estimate stamps (s)")
       ->capture_default_str();
   cmd->add_option("--association", a.association,
-                  "tum: greedy one-to-one (associate.py); evo: nearest per estimate pose")
+                  "tum: greedy one-to-one (associate.py); evo: nearest per pose of the shorter "
+                  "trajectory (default: the convention's)")
+      ->check(CLI::IsMember({"tum", "evo"}));
+  cmd->add_option("--duplicate-stamps", a.duplicates,
+                  "Of a repeated timestamp keep the last line (tum) or the first (evo)")
+      ->check(CLI::IsMember({"last", "first"}));
+  cmd->add_option("--time-unit", a.time_unit, "Unit of the files' timestamps: s, us or ns")
+      ->check(CLI::IsMember({"s", "us", "ns"}))
       ->capture_default_str();
   cmd->add_option("--out", a.out_dir,
                   "Folder for metrics.json, the error CSVs, aligned.txt and plots");
@@ -57,7 +71,9 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
 }
 
 void add_ate_options(CLI::App* cmd, EvalArgs& a) {
-  cmd->add_option("--align", a.align, "se3 (Horn/Umeyama), sim3, translation or none")
+  cmd->add_option("--align", a.align,
+                  "se3 (Horn/Umeyama), sim3, translation or none; sim3 also scales the "
+                  "estimate for RPE")
       ->capture_default_str();
   cmd->add_option("--align-first", a.align_first,
                   "Align on the first N pairs only (1 = first poses; 0 = all)")
@@ -73,8 +89,12 @@ void add_rpe_options(CLI::App* cmd, EvalArgs& a) {
       ->capture_default_str();
   cmd->add_flag("--all-pairs", a.rpe.all_pairs,
                 "tum: every pose pair (delta ignored); evo: a pair at every pose");
-  cmd->add_option("--rpe-convention", a.convention,
-                  "tum (evaluate_rpe.py) or evo (see eval/README.md)")
+  cmd->add_option("--rpe-convention", a.rpe_convention,
+                  "tum (evaluate_rpe.py) or evo (default: the convention's)")
+      ->check(CLI::IsMember({"tum", "evo"}));
+  cmd->add_option("--delta-tol", a.rpe.rel_delta_tol,
+                  "evo all-pairs in m or deg: accept pairs within this fraction of delta")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }
 
@@ -127,6 +147,13 @@ const bool kRegistered = register_command([](CLI::App& root) {
       "rpe", "Relative pose error over a fixed delta (the benchmark's evaluate_rpe.py)");
   add_common_options(rpe_cmd, *rpe);
   add_rpe_options(rpe_cmd, *rpe);
+  rpe->align = "none";
+  rpe_cmd
+      ->add_option("--align", rpe->align,
+                   "sim3: scale the estimate by a Sim(3) alignment first (evo_rpe -as); se3, "
+                   "translation and none leave relative poses unchanged")
+      ->check(CLI::IsMember({"se3", "sim3", "translation", "none"}))
+      ->capture_default_str();
   rpe_cmd->add_option("--csv", rpe->rpe_csv, "Per-pair error CSV (rpe.csv)");
   rpe_cmd->callback([rpe] { run_eval(*rpe, false, true); });
 

@@ -1,5 +1,7 @@
 #include "bin/eval_run.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -7,6 +9,7 @@
 #include <optional>
 
 #include "bin/command.h"
+#include "core/error.h"
 #include "eval/association.h"
 #include "eval/ate.h"
 #include "eval/compare.h"
@@ -36,22 +39,61 @@ void print_reader_warnings(const EvalArgs& a, const TrajectoryFile& f) {
                 " more (listed in metrics.json inputs)");
 }
 
+// The rules in force: each one given explicitly, else the convention's.
+struct Rules {
+  eval::AssociationOptions association;
+  TrajectoryReadOptions reading;
+};
+
+Rules resolve_rules(EvalArgs& a) {
+  const bool evo = eval::parse_association_method(a.convention) == eval::AssociationMethod::kEvo;
+  const auto pick = [&](const std::string& given, const char* tum, const char* evo_rule) {
+    return given.empty() ? std::string(evo ? evo_rule : tum) : given;
+  };
+  Rules r;
+  r.association.method = eval::parse_association_method(pick(a.association, "tum", "evo"));
+  r.association.max_diff = a.max_diff.value_or(evo ? eval::kEvoMaxDiff : eval::kTumMaxDiff);
+  r.association.offset = a.offset;
+  r.reading.duplicates = parse_duplicate_stamps(pick(a.duplicates, "last", "first"));
+  r.reading.time_unit = parse_time_unit(a.time_unit);
+  a.rpe.convention = eval::parse_rpe_convention(pick(a.rpe_convention, "tum", "evo"));
+  return r;
+}
+
+// Stamps beyond 1e11 s (the year 5138) are not seconds; pairing them as seconds gives
+// nonsense (every pose paired with itself), so say what they look like.
+void require_plausible_stamps(const Trajectory& t, const std::string& name) {
+  const double largest = std::max(std::abs(t.start_time()), std::abs(t.end_time()));
+  if (largest <= 1e11) return;
+  char text[320];
+  std::snprintf(text, sizeof text, "timestamps reach %.17g, beyond 1e11 s (the year 5138): %s",
+                largest,
+                largest >= 1e17   ? "looks like nanoseconds; pass --time-unit ns"
+                : largest >= 1e14 ? "looks like microseconds; pass --time-unit us"
+                                  : "not a time in seconds (--time-unit converts ns or us)");
+  throw_input_error(name, text);
+}
+
 struct Inputs {
   TrajectoryFile gt, est;
   std::vector<IndexPair> pairs;
   eval::AssociationOptions association;
+  TrajectoryReadOptions reading;
   eval::Coverage coverage;
 };
 
 // Reads both files, associates them and reports coverage; `need_pairs` makes fewer than 2
 // associated pairs an error.
-Inputs load_inputs(EvalArgs& a, bool need_pairs) {
+Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
   Inputs in;
-  in.gt = read_tum_trajectory(a.gt);
-  in.est = read_tum_trajectory(a.est);
+  in.association = rules.association;
+  in.reading = rules.reading;
+  in.gt = read_tum_trajectory(a.gt, in.reading);
+  in.est = read_tum_trajectory(a.est, in.reading);
+  require_plausible_stamps(in.gt.trajectory, a.gt);
+  require_plausible_stamps(in.est.trajectory, a.est);
   print_reader_warnings(a, in.gt);
   print_reader_warnings(a, in.est);
-  in.association = {eval::parse_association_method(a.association), a.max_diff, a.offset};
   in.pairs = eval::associate(in.gt.trajectory, in.est.trajectory, in.association);
   if (need_pairs)
     eval::require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
@@ -59,6 +101,30 @@ Inputs load_inputs(EvalArgs& a, bool need_pairs) {
   in.coverage = eval::compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
   if (const auto text = eval::coverage_warning(in.coverage)) warn(a, *text);
   return in;
+}
+
+// Statistics that overflowed are refused rather than written (as null) or printed (as inf).
+void require_finite(const eval::ErrorStats& s, const std::string& what, const std::string& file) {
+  for (double v : {s.rmse, s.mean, s.median, s.std, s.min, s.max})
+    if (!std::isfinite(v))
+      throw_input_error(file, what +
+                                  " statistics are not finite: the input's values overflow "
+                                  "the arithmetic; check this file for absurd values");
+}
+
+// A time delta shorter than the poses' spacing pairs each pose with itself or a neighbour.
+void warn_short_time_delta(const EvalArgs& a, const Trajectory& est) {
+  if (a.rpe.unit != eval::DeltaUnit::kSeconds || a.rpe.all_pairs || est.size() < 2) return;
+  std::vector<double> intervals(est.size() - 1);
+  for (size_t k = 1; k < est.size(); ++k) intervals[k - 1] = est.stamp(k) - est.stamp(k - 1);
+  const double median = eval::compute_stats(intervals).median;
+  if (!(a.rpe.delta < median)) return;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "RPE delta %g s is below the median interval between estimated poses (%g s): "
+                "most poses are paired with themselves or a neighbour",
+                a.rpe.delta, median);
+  warn(a, text);
 }
 
 // Fills in defaults that depend on the file names.
@@ -83,9 +149,12 @@ json common_json(const EvalArgs& a, const Inputs& in) {
   return {{"settings",
            {{"title", a.title},
             {"system_name", a.system_name},
+            {"convention", a.convention},
             {"association", eval::to_string(in.association.method)},
-            {"max_diff", a.max_diff},
-            {"offset", a.offset}}},
+            {"max_diff", in.association.max_diff},
+            {"offset", a.offset},
+            {"time_unit", to_string(in.reading.time_unit)},
+            {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
            {{"groundtruth", eval::input_json(a.gt, in.gt)},
             {"estimate", eval::input_json(a.est, in.est)}}},
@@ -133,43 +202,55 @@ bool draw_plots(const EvalArgs& a, const std::string& kind, const std::string& c
 }  // namespace
 
 void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
+  const Rules rules = resolve_rules(a);
   a.rpe.unit = eval::parse_delta_unit(a.unit);
-  a.rpe.convention = eval::parse_rpe_convention(a.convention);
   a.rpe.offset = a.offset;
   const eval::AteOptions ate_options{eval::parse_align_method(a.align), a.align_first};
-  // The benchmark's RPE does its own matching; ATE and evo's RPE need associated pairs.
-  const bool need_pairs = do_ate || a.rpe.convention == eval::RpeConvention::kEvo;
-  const Inputs in = load_inputs(a, need_pairs);
+  const bool scale_rpe = do_rpe && ate_options.align == eval::AlignMethod::kSim3;
+  // The benchmark's RPE does its own matching; ATE, evo's RPE and a Sim(3) scale need pairs.
+  const bool need_pairs = do_ate || scale_rpe || a.rpe.convention == eval::RpeConvention::kEvo;
+  const Inputs in = load_inputs(a, rules, need_pairs);
   resolve_outputs(a);
   const Trajectory& gt = in.gt.trajectory;
   const Trajectory& est = in.est.trajectory;
 
-  json update = common_json(a, in);
-  std::string summary;
-  std::optional<eval::AteResult> ate;
-  std::optional<eval::RpeResult> rpe;
+  // Each metric writes its files as soon as it is done, so that a million-pose run holds one
+  // metric's per-pose data at a time.
+  const json common = common_json(a, in);
+  eval::Alignment alignment;
+  bool plotted = true;
   if (do_ate) {
-    ate = eval::compute_ate(gt, est, in.pairs, ate_options);
-    update["ate"] = eval::ate_json(*ate);
+    eval::AteResult ate = eval::compute_ate(gt, est, in.pairs, ate_options, a.gt, a.est);
+    require_finite(ate.trans, "ATE", a.est);
+    alignment = ate.alignment;
+    json update = common;
+    update["ate"] = eval::ate_json(ate);
     update["settings"]["align"] = a.align;
     update["settings"]["align_first"] = a.align_first;
-    summary += eval::ate_summary(*ate, in.coverage);
+    if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
+    if (!a.ate_csv.empty()) eval::write_ate_csv(a.ate_csv, ate);
+    if (!a.aligned_path.empty())
+      write_tum_trajectory(a.aligned_path, eval::apply_alignment(est, ate.alignment),
+                           "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
+    if (!a.quiet) std::fputs(eval::ate_summary(ate, in.coverage).c_str(), stdout);
+    plotted = draw_plots(a, "ate", a.ate_csv) && plotted;
+  } else if (scale_rpe) {
+    alignment = eval::align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
   }
   if (do_rpe) {
-    rpe = eval::compute_rpe(gt, est, in.pairs, a.rpe, a.est);
-    update["rpe"] = eval::rpe_json(*rpe, a.rpe);
-    summary += eval::rpe_summary(*rpe, a.rpe);
+    a.rpe.scale = scale_rpe ? alignment.scale : 1.0;
+    warn_short_time_delta(a, est);
+    const eval::RpeResult rpe = eval::compute_rpe(gt, est, in.pairs, a.rpe, a.est);
+    require_finite(rpe.trans, "RPE", a.est);
+    require_finite(rpe.rot_deg, "RPE rotation", a.est);
+    json update = common;
+    update["rpe"] = eval::rpe_json(rpe, a.rpe);
+    if (!do_ate) update["settings"]["align"] = a.align;
+    if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
+    if (!a.rpe_csv.empty()) eval::write_rpe_csv(a.rpe_csv, rpe);
+    if (!a.quiet) std::fputs(eval::rpe_summary(rpe, a.rpe).c_str(), stdout);
+    plotted = draw_plots(a, "rpe", a.rpe_csv) && plotted;
   }
-  if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
-  if (ate && !a.ate_csv.empty()) eval::write_ate_csv(a.ate_csv, *ate);
-  if (rpe && !a.rpe_csv.empty()) eval::write_rpe_csv(a.rpe_csv, *rpe);
-  if (ate && !a.aligned_path.empty())
-    write_tum_trajectory(a.aligned_path, eval::apply_alignment(est, ate->alignment),
-                         "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
-  if (!a.quiet) std::fputs(summary.c_str(), stdout);
-  bool plotted = true;
-  if (ate) plotted = draw_plots(a, "ate", a.ate_csv) && plotted;
-  if (rpe) plotted = draw_plots(a, "rpe", a.rpe_csv) && plotted;
   if (!plotted) throw ExitCode{1};
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The evaluation run behind `slamkit eval ate|rpe|all`, also used by `slamkit track` when the
 // sequence has groundtruth: read both files, associate, compute, write, summarise, plot.
+#include <optional>
 #include <string>
 
 #include "eval/rpe.h"
@@ -10,9 +11,14 @@ namespace slamkit::cli {
 // Options of `eval ate`, `eval rpe` and `eval all` (each registers the ones it uses).
 struct EvalArgs {
   std::string gt, est;
-  double max_diff = 0.02;
+  // tum (the benchmark scripts) or evo: the defaults of the rules left unset below
+  // (association, max_diff, duplicate stamps, RPE convention). See eval/README.md.
+  std::string convention = "tum";
+  std::optional<double> max_diff;  // unset: 0.02 s (tum) or 0.01 s (evo)
   double offset = 0.0;
-  std::string association = "tum";
+  std::string association;  // tum or evo; "" = the convention's
+  std::string duplicates;   // last or first; "" = the convention's
+  std::string time_unit = "s";
   std::string out_dir;    // metrics.json, CSVs, aligned.txt and plots unless overridden
   std::string json_path;  // --json
   std::string ate_csv, rpe_csv, aligned_path;
@@ -22,12 +28,13 @@ struct EvalArgs {
   std::string planes = "xy";
   std::string title, system_name;
   bool quiet = false;
-  // ATE
+  // ATE (and RPE's scale: a sim3 alignment scales the estimate before RPE, as evo_rpe -as)
   std::string align = "se3";
   size_t align_first = 0;
   // RPE
   eval::RpeOptions rpe;
-  std::string unit = "s", convention = "tum";
+  std::string unit = "s";
+  std::string rpe_convention;  // tum or evo; "" = the convention's
 };
 
 // Throws InputError for unreadable input and ExitCode{1} when requested plots fail.

@@ -3,8 +3,9 @@
 //   tum: the benchmark's associate.py (core/association.h): candidates with
 //        |t_gt - (t_est + offset)| < max_diff, taken greedily by smallest difference, each
 //        pose used at most once.
-//   evo: evo's sync.associate_trajectories: each estimated pose takes its nearest
-//        groundtruth pose if |difference| <= max_diff; a groundtruth pose may serve twice.
+//   evo: evo's sync.associate_trajectories: each pose of the trajectory with fewer poses (the
+//        estimate when both have as many) takes the nearest pose of the other (the earlier on
+//        a tie) if |difference| <= max_diff; a pose of the longer one may serve twice.
 #include <string>
 #include <vector>
 
@@ -15,13 +16,18 @@ namespace slamkit::eval {
 
 enum class AssociationMethod { kTum, kEvo };
 
+// The default tolerances: associate.py's --max_difference and evo's --t_max_diff.
+constexpr double kTumMaxDiff = 0.02;
+constexpr double kEvoMaxDiff = 0.01;
+
 struct AssociationOptions {
   AssociationMethod method = AssociationMethod::kTum;
-  double max_diff = 0.02;  // seconds
-  double offset = 0.0;     // added to estimate stamps (the benchmark's --offset)
+  double max_diff = kTumMaxDiff;  // seconds
+  double offset = 0.0;            // added to estimate stamps (the benchmark's --offset)
 };
 
-// IndexPair::first indexes `gt`, ::second indexes `est`; sorted by estimate time.
+// IndexPair::first indexes `gt`, ::second indexes `est`; sorted by estimate index (then by
+// groundtruth index).
 std::vector<IndexPair> associate(const Trajectory& gt, const Trajectory& est,
                                  const AssociationOptions& options);
 

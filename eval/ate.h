@@ -1,6 +1,7 @@
 #pragma once
 // Absolute trajectory error: align the matched estimate to groundtruth, then measure each
 // matched pose's position error (the benchmark's evaluate_ate.py) and rotation error.
+#include <string>
 #include <vector>
 
 #include "core/association.h"
@@ -19,7 +20,7 @@ struct AteResult {
   std::vector<double> trans_errors;    // metres: |aligned estimate - groundtruth|
   std::vector<double> rot_errors_deg;  // angle of R_gt^-1 * R_aligned_estimate
   ErrorStats trans;
-  ErrorStats rot_deg;
+  ErrorStats rot_deg;  // meaningful only if alignment.rotation_well_determined()
 };
 
 struct AteOptions {
@@ -27,9 +28,12 @@ struct AteOptions {
   size_t align_first = 0;  // align on the first N pairs only (0 = all)
 };
 
-// `pairs` as from eval::associate (first: gt index, second: est index).
+// `pairs` as from eval::associate (first: gt index, second: est index). Throws InputError
+// (naming the file) when the alignment is undetermined (see eval::align).
 AteResult compute_ate(const Trajectory& gt, const Trajectory& est,
-                      const std::vector<IndexPair>& pairs, const AteOptions& options);
+                      const std::vector<IndexPair>& pairs, const AteOptions& options,
+                      const std::string& gt_name = "groundtruth",
+                      const std::string& est_name = "estimate");
 
 // The whole estimate (matched or not) moved by the alignment, for aligned.txt.
 Trajectory apply_alignment(const Trajectory& est, const Alignment& alignment);

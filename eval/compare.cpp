@@ -1,11 +1,13 @@
 #include "eval/compare.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <set>
 
 #include "core/error.h"
 #include "eval/metrics_json.h"
+#include "io/trajectory_io.h"
 
 namespace slamkit::eval {
 namespace {
@@ -43,6 +45,11 @@ std::string cell(const EvaluatedRun& run, const Column& c) {
   }
   if (!v->contains(key)) return "";
   const json& x = (*v)[key];
+  if (!x.is_number() || !std::isfinite(x.get<double>()))
+    throw_input_error((run.dir / "metrics.json").string(),
+                      std::string(c.section) + "." + c.key + " is " + printable(x.dump()) +
+                          ", not a finite number (written from overflowing input by an older "
+                          "slamkit? evaluate the run again)");
   if (x.is_number_integer()) return std::to_string(x.get<long long>());
   char text[32];
   std::snprintf(text, sizeof text, "%.6f", x.get<double>());
@@ -65,16 +72,22 @@ std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& di
     EvaluatedRun run;
     run.dir = dir;
     run.metrics = read_metrics_file(dir / "metrics.json");
-    if (!run.metrics.contains("ate"))
+    if (!run.metrics.contains("ate") || !run.metrics["ate"].is_object())
       throw_input_error((dir / "metrics.json").string(),
                         "no \"ate\" section: run `slamkit eval ate` for this run first");
-    const json settings = run.metrics.value("settings", json::object());
-    run.name = settings.value("system_name", std::string());
+    const json settings = run.metrics.contains("settings") && run.metrics["settings"].is_object()
+                              ? run.metrics["settings"]
+                              : json::object();
+    const json name = settings.value("system_name", json());
+    // Names are printed with the table: escape control characters from the file.
+    run.name = name.is_string() ? printable(name.get<std::string>(), 200) : "";
     if (run.name.empty()) run.name = std::filesystem::absolute(dir).lexically_normal().filename();
     if (run.name.empty()) run.name = dir.string();
     if (names.count(run.name)) run.name += " (" + dir.string() + ")";
     names.insert(run.name);
-    run.sequence = settings.value("title", std::string());
+    const json title = settings.value("title", json());
+    run.sequence = title.is_string() ? printable(title.get<std::string>(), 200) : "";
+    for (const Column& c : kColumns) cell(run, c);  // a bad value fails before any output
     runs.push_back(std::move(run));
   }
   return runs;

@@ -15,8 +15,8 @@ struct EvaluatedRun {
   nlohmann::json metrics;
 };
 
-// Reads RUN/metrics.json of each folder (InputError naming the file if missing or without
-// an "ate" section).
+// Reads RUN/metrics.json of each folder (InputError naming the file if missing, malformed,
+// without an "ate" section, or holding a table value that is not a finite number).
 std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& dirs);
 
 // One row per run: ATE pairs and statistics, RPE pairs and RMSEs (blank without RPE).

@@ -1,10 +1,10 @@
 #include "eval/error_csv.h"
 
+#include <charconv>
 #include <fstream>
 #include <string>
 
 #include "core/error.h"
-#include "core/number_format.h"
 
 namespace slamkit::eval {
 namespace {
@@ -17,32 +17,43 @@ std::ofstream open_csv(const std::filesystem::path& path, const char* header) {
   return out;
 }
 
-// Shortest text that reads back to the same double, so CSV values equal metrics.json's.
-void put(std::ofstream& out, double v, char sep = ',') { out << format_exact(v) << sep; }
+// Shortest text that reads back to the same double (format_exact's), so CSV values equal
+// metrics.json's; appended to a line buffer (a string per number made large runs slow).
+void put(std::string& line, double v, char sep = ',') {
+  char text[400];  // fixed notation of the largest double needs 309 digits
+  line.append(text, std::to_chars(text, text + sizeof text, v, std::chars_format::fixed).ptr);
+  line += sep;
+}
 
 }  // namespace
 
 void write_ate_csv(const std::filesystem::path& path, const AteResult& ate) {
   std::ofstream out = open_csv(path, "time,ate_m,est_tx,est_ty,est_tz,gt_tx,gt_ty,gt_tz,rot_deg");
+  std::string line;
   for (size_t k = 0; k < ate.stamps.size(); ++k) {
-    put(out, ate.stamps[k]);
-    put(out, ate.trans_errors[k]);
-    for (int d = 0; d < 3; ++d) put(out, ate.est_aligned[k][d]);
-    for (int d = 0; d < 3; ++d) put(out, ate.gt_positions[k][d]);
-    put(out, ate.rot_errors_deg[k], '\n');
+    line.clear();
+    put(line, ate.stamps[k]);
+    put(line, ate.trans_errors[k]);
+    for (int d = 0; d < 3; ++d) put(line, ate.est_aligned[k][d]);
+    for (int d = 0; d < 3; ++d) put(line, ate.gt_positions[k][d]);
+    put(line, ate.rot_errors_deg[k], '\n');
+    out << line;
   }
   if (!out) throw_input_error(path.string(), "write failed");
 }
 
 void write_rpe_csv(const std::filesystem::path& path, const RpeResult& rpe) {
   std::ofstream out = open_csv(path, "time_i,time_j,gt_time_i,gt_time_j,trans_m,rot_deg");
+  std::string line;
   for (const RpePair& p : rpe.pairs) {
-    put(out, p.stamp_est_i);
-    put(out, p.stamp_est_j);
-    put(out, p.stamp_gt_i);
-    put(out, p.stamp_gt_j);
-    put(out, p.trans);
-    put(out, p.rot_deg, '\n');
+    line.clear();
+    put(line, p.stamp_est_i);
+    put(line, p.stamp_est_j);
+    put(line, p.stamp_gt_i);
+    put(line, p.stamp_gt_j);
+    put(line, p.trans);
+    put(line, p.rot_deg, '\n');
+    out << line;
   }
   if (!out) throw_input_error(path.string(), "write failed");
 }

@@ -1,6 +1,9 @@
 #include "eval/metrics_json.h"
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "core/error.h"
 #include "eval/checksum.h"
@@ -14,17 +17,31 @@ json stats_json(const ErrorStats& s) {
           {"std", s.std},   {"min", s.min},   {"max", s.max}};
 }
 
+std::string rotation_withheld_reason(const Alignment& a) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "the matched positions fix the alignment's rotation only to within %.1f deg "
+                "(nearly collinear or too short a motion; limit %.1f deg)",
+                a.rotation_ambiguity_deg, kMaxRotationAmbiguityDeg);
+  return text;
+}
+
 json ate_json(const AteResult& ate) {
   json j = stats_json(ate.trans);
   j["pairs"] = ate.trans.count;
-  j["rot_deg"] = stats_json(ate.rot_deg);
   const Alignment& a = ate.alignment;
+  if (a.rotation_well_determined()) {
+    j["rot_deg"] = stats_json(ate.rot_deg);
+  } else {
+    j["rot_deg_withheld"] = rotation_withheld_reason(a);
+  }
   json rotation = json::array();
   for (int r = 0; r < 3; ++r)
     rotation.push_back({a.rotation(r, 0), a.rotation(r, 1), a.rotation(r, 2)});
   j["alignment"] = {{"method", to_string(a.method)},
                     {"poses_used", a.poses_used},
                     {"scale", a.scale},
+                    {"rotation_ambiguity_deg", a.rotation_ambiguity_deg},
                     {"rotation", rotation},
                     {"translation", {a.translation.x(), a.translation.y(), a.translation.z()}}};
   return j;
@@ -36,6 +53,8 @@ json rpe_json(const RpeResult& rpe, const RpeOptions& options) {
           {"unit", to_string(options.unit)},
           {"all_pairs", options.all_pairs},
           {"convention", to_string(options.convention)},
+          {"scale", options.scale},
+          {"rel_delta_tol", options.rel_delta_tol},
           {"trans", stats_json(rpe.trans)},
           {"rot_deg", stats_json(rpe.rot_deg)}};
 }
@@ -63,7 +82,24 @@ json input_json(const std::filesystem::path& path, const TrajectoryFile& file) {
           {"warnings", file.warnings}};
 }
 
+namespace {
+
+// The JSON pointer of the first non-finite number in `j` (nlohmann writes those as null).
+std::optional<std::string> find_non_finite(const json& j, const std::string& at) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) return at;
+  if (j.is_structured())
+    for (const auto& [key, value] : j.items())
+      if (auto found = find_non_finite(value, at + "/" + key)) return found;
+  return std::nullopt;
+}
+
+}  // namespace
+
 void merge_into_metrics_file(const std::filesystem::path& path, const json& update) {
+  // A last guard: the metrics check their own results, but null must never reach the file.
+  if (const auto at = find_non_finite(update, ""))
+    throw_input_error(path.string(), "not written: the value at " + *at +
+                                         " is not finite (the input overflowed the arithmetic)");
   json merged = json::object();
   if (std::filesystem::exists(path)) {
     merged = read_metrics_file(path);
@@ -84,6 +120,8 @@ void merge_into_metrics_file(const std::filesystem::path& path, const json& upda
 }
 
 json read_metrics_file(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw_input_error(path.string(), "no metrics file here (run `slamkit eval ... --out` first)");
   std::ifstream in(path);
   if (!in) throw_input_error(path.string(), "cannot read metrics file");
   const json j = json::parse(in, nullptr, false);

@@ -17,7 +17,10 @@
 namespace slamkit::eval {
 
 nlohmann::json stats_json(const ErrorStats& s);  // rmse, mean, median, std, min, max
+// "rot_deg" is left out, and "rot_deg_withheld" gives the reason, when the alignment does not
+// determine the rotation (Alignment::rotation_well_determined).
 nlohmann::json ate_json(const AteResult& ate);
+std::string rotation_withheld_reason(const Alignment& a);
 nlohmann::json rpe_json(const RpeResult& rpe, const RpeOptions& options);
 nlohmann::json coverage_json(const Coverage& c);
 // path, fnv1a64 checksum, poses, start, end, skipped-line counts and warnings.
@@ -26,7 +29,7 @@ nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFil
 // Merges `update` into the JSON file at `path` (created if missing): "ate" and "rpe" are
 // replaced whole, the other top-level objects ("settings", "inputs", "coverage") key by key,
 // so `eval ate` and `eval rpe` can share one file. Throws InputError if the existing file is
-// not a JSON object (rather than clobbering it).
+// not a JSON object (rather than clobbering it) or if `update` holds a non-finite number.
 void merge_into_metrics_file(const std::filesystem::path& path, const nlohmann::json& update);
 
 // Reads a metrics.json; InputError naming the file when missing or malformed.

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <numeric>
 #include <stdexcept>
 
 #include "core/enum_names.h"
@@ -13,7 +16,7 @@
 namespace slamkit::eval {
 namespace {
 
-using Poses = std::vector<Eigen::Isometry3d>;
+using IdPairs = std::vector<std::pair<size_t, size_t>>;
 
 double rad_to_deg(double rad) { return rad * 180.0 / M_PI; }
 
@@ -23,50 +26,101 @@ double trace_angle(const Eigen::Matrix3d& R) {
   return std::acos(std::min(1.0, std::max(-1.0, (R.trace() - 1.0) / 2.0)));
 }
 
-// The delta "index" of every pose: time, frame number, path length or accumulated rotation
-// (the script's distances_along_trajectory / rotations_along_trajectory).
-std::vector<double> delta_index(const std::vector<double>& stamps, const Poses& poses,
+// Pose k of a pose list, rebuilt on demand (a million poses as matrices would take 128 MB).
+using PoseAt = std::function<Eigen::Isometry3d(size_t)>;
+
+// The estimated pose with its position scaled (see RpeOptions::scale); unchanged at scale 1.
+Eigen::Isometry3d scaled(Eigen::Isometry3d T, double scale) {
+  if (scale != 1.0) T.translation() *= scale;
+  return T;
+}
+
+// The delta "index" of every pose for frames, metres and degrees (seconds use the stamps):
+// frame number, path length or accumulated rotation (the script's
+// distances_along_trajectory / rotations_along_trajectory).
+std::vector<double> delta_index(const std::vector<double>& stamps, const PoseAt& pose,
                                 DeltaUnit unit) {
-  std::vector<double> index(poses.size(), 0.0);
-  for (size_t k = 1; k < poses.size(); ++k) {
-    const Eigen::Isometry3d motion = poses[k].inverse() * poses[k - 1];
-    switch (unit) {
-      case DeltaUnit::kSeconds:
-        index[k] = stamps[k];
-        break;
-      case DeltaUnit::kFrames:
-        index[k] = double(k);
-        break;
-      case DeltaUnit::kMetres:
-        index[k] = index[k - 1] + motion.translation().norm();
-        break;
-      case DeltaUnit::kDegrees:
-        index[k] = index[k - 1] + rad_to_deg(trace_angle(motion.rotation()));
-        break;
-    }
+  std::vector<double> index(stamps.size(), 0.0);
+  if (unit == DeltaUnit::kFrames) {
+    std::iota(index.begin(), index.end(), 0.0);
+    return index;
   }
-  if (unit == DeltaUnit::kSeconds && !stamps.empty()) index[0] = stamps[0];
+  Eigen::Isometry3d previous = stamps.empty() ? Eigen::Isometry3d::Identity() : pose(0);
+  for (size_t k = 1; k < stamps.size(); ++k) {
+    const Eigen::Isometry3d current = pose(k);
+    const Eigen::Isometry3d motion = current.inverse() * previous;
+    index[k] =
+        index[k - 1] + (unit == DeltaUnit::kMetres ? motion.translation().norm()
+                                                   : rad_to_deg(trace_angle(motion.rotation())));
+    previous = current;
+  }
   return index;
 }
 
-// Pairs (i, j) with index_j closest to index_i + delta; `drop_last` is the script's
-// `if j != len(traj_est)-1`.
-std::vector<std::pair<size_t, size_t>> closest_delta_pairs(const std::vector<double>& index,
-                                                           double delta, bool drop_last) {
-  std::vector<std::pair<size_t, size_t>> pairs;
-  for (size_t i = 0; i < index.size(); ++i) {
-    const size_t j = find_closest_index(index, index[i] + delta);
-    if (drop_last && j == index.size() - 1) continue;
+// Pairs (i, j) with index_j closest to index_i + delta, the last pose included (evo's way).
+IdPairs closest_delta_pairs(const std::vector<double>& index, double delta) {
+  IdPairs pairs;
+  for (size_t i = 0; i < index.size(); ++i)
+    pairs.push_back({i, find_closest_index(index, index[i] + delta)});
+  return pairs;
+}
+
+// The length of a step as numpy's norm computes it (squares summed in order).
+double step_length(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d step = a - b;
+  return std::sqrt(step.x() * step.x() + step.y() * step.y() + step.z() * step.z());
+}
+
+// geometry.accumulated_distances: 0, then the running sum of the steps' lengths.
+std::vector<double> accumulated_distances(const std::vector<Eigen::Vector3d>& positions) {
+  std::vector<double> d(positions.size(), 0.0);
+  for (size_t k = 1; k < positions.size(); ++k)
+    d[k] = d[k - 1] + step_length(positions[k - 1], positions[k]);
+  return d;
+}
+
+// filter_pairs_by_path with all_pairs: for each i, the j > i whose path distance from i is
+// closest to delta (the first such j on a tie, as numpy's argmin), kept if it is off by at
+// most tol. The distances from i do not decrease with j, so a binary search finds j.
+IdPairs path_all_pairs(const std::vector<double>& d, double delta, double tol) {
+  IdPairs pairs;
+  for (size_t i = 0; i + 1 < d.size(); ++i) {
+    const auto from_i = [&](size_t j) { return d[j] - d[i]; };
+    const auto off = [&](size_t j) { return std::abs(from_i(j) - delta); };
+    size_t lo = i + 1, hi = d.size();  // first j with from_i(j) - delta >= 0
+    while (lo < hi) {
+      const size_t mid = (lo + hi) / 2;
+      if (from_i(mid) - delta < 0) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    size_t j = std::min(lo, d.size() - 1);
+    if (lo > i + 1 && (lo == d.size() || off(lo - 1) <= off(lo))) {
+      // The best is below delta; take the first j of its run of equal distances.
+      const double value = from_i(lo - 1);
+      size_t first = i + 1, last = lo - 1;
+      while (first < last) {
+        const size_t mid = (first + last) / 2;
+        if (from_i(mid) < value) {
+          first = mid + 1;
+        } else {
+          last = mid;
+        }
+      }
+      j = first;
+    }
+    if (off(j) > tol) continue;
     pairs.push_back({i, j});
   }
   return pairs;
 }
 
-// evo's filters.id_pairs_from_delta on the associated poses.
-std::vector<std::pair<size_t, size_t>> evo_pairs(const std::vector<double>& stamps,
-                                                 const Poses& poses, const RpeOptions& o) {
-  std::vector<std::pair<size_t, size_t>> pairs;
-  const size_t n = poses.size();
+// evo's filters.id_pairs_from_delta on the associated poses P (the estimate's).
+IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P, const RpeOptions& o) {
+  IdPairs pairs;
+  const size_t n = stamps.size();
   if (o.unit == DeltaUnit::kFrames) {  // filter_pairs_by_index
     const size_t d = size_t(std::llround(o.delta));
     if (d == 0) throw std::invalid_argument("--delta must be at least 1 frame");
@@ -77,11 +131,16 @@ std::vector<std::pair<size_t, size_t>> evo_pairs(const std::vector<double>& stam
     }
     return pairs;
   }
-  if (o.unit == DeltaUnit::kMetres && !o.all_pairs) {  // filter_pairs_by_path, consecutive
+  if (o.unit == DeltaUnit::kMetres) {  // filter_pairs_by_path
+    std::vector<Eigen::Vector3d> positions(n);
+    for (size_t k = 0; k < n; ++k) positions[k] = P(k).translation();
+    if (o.all_pairs)
+      return path_all_pairs(accumulated_distances(positions), o.delta, o.delta * o.rel_delta_tol);
+    // Consecutive windows: a pose ends one when the path since the last end reaches delta.
     std::vector<size_t> ids;
     double path = 0;
     for (size_t k = 1; k < n; ++k) {
-      path += (poses[k].translation() - poses[k - 1].translation()).norm();
+      path += step_length(positions[k], positions[k - 1]);
       if (path >= o.delta) {
         ids.push_back(k);
         path = 0;
@@ -90,9 +149,40 @@ std::vector<std::pair<size_t, size_t>> evo_pairs(const std::vector<double>& stam
     for (size_t k = 1; k < ids.size(); ++k) pairs.push_back({ids[k - 1], ids[k]});
     return pairs;
   }
-  // Seconds (evo has no time delta), degrees and all-pairs metres: the benchmark's
-  // closest-index rule, keeping the last pose like evo does. See eval/README.md.
-  return closest_delta_pairs(delta_index(stamps, poses, o.unit), o.delta, false);
+  if (o.unit == DeltaUnit::kDegrees) {  // filter_pairs_by_angle (evo >= Aug 2021, PR #426)
+    if (o.delta > 180.0)
+      throw std::invalid_argument("--delta in degrees must be within [0, 180] (evo's rule)");
+    const double delta = o.delta * (M_PI / 180.0), tol = o.delta * o.rel_delta_tol * (M_PI / 180.0);
+    if (o.all_pairs) {  // every j > i whose direct relative angle is within tol of delta
+      for (size_t i = 0; i + 1 < n; ++i) {
+        const Eigen::Isometry3d P_i = P(i);
+        for (size_t j = i + 1; j < n; ++j) {
+          const double angle = rotation_angle(P_i.inverse() * P(j));
+          if (delta - tol <= angle && angle <= delta + tol) pairs.push_back({i, j});
+        }
+      }
+      return pairs;
+    }
+    // Consecutive windows from pose 0: the angles between neighbouring poses accumulate, as
+    // path lengths do for metres; a window closes when the sum reaches delta.
+    double accumulated = 0;
+    size_t start = 0;
+    Eigen::Isometry3d previous = n ? P(0) : Eigen::Isometry3d::Identity();
+    for (size_t k = 1; k < n; ++k) {
+      const Eigen::Isometry3d current = P(k);
+      accumulated += rotation_angle(previous.inverse() * current);
+      previous = current;
+      if (accumulated >= delta) {
+        pairs.push_back({start, k});
+        accumulated = 0;
+        start = k;
+      }
+    }
+    return pairs;
+  }
+  // Seconds: evo has no time delta; the benchmark's closest-index rule, keeping the last pose
+  // like evo's filters do. See eval/README.md.
+  return closest_delta_pairs(stamps, o.delta);
 }
 
 RpeResult finish(std::vector<RpePair> pairs, const std::string& est_name, size_t candidates) {
@@ -107,6 +197,8 @@ RpeResult finish(std::vector<RpePair> pairs, const std::string& est_name, size_t
   }
   RpeResult r;
   std::vector<double> trans, rot;
+  trans.reserve(pairs.size());
+  rot.reserve(pairs.size());
   for (const RpePair& p : pairs) {
     trans.push_back(p.trans);
     rot.push_back(p.rot_deg);
@@ -119,63 +211,68 @@ RpeResult finish(std::vector<RpePair> pairs, const std::string& est_name, size_t
 
 RpeResult rpe_tum(const Trajectory& gt, const Trajectory& est, const RpeOptions& o,
                   const std::string& est_name) {
-  const std::vector<double> stamps_est = est.stamps(), stamps_gt = gt.stamps();
-  Poses poses(est.size());
-  for (size_t k = 0; k < est.size(); ++k) poses[k] = est[k].T_w_c;
-
-  std::vector<std::pair<size_t, size_t>> pairs;
-  if (o.all_pairs) {
-    for (size_t i = 0; i < est.size(); ++i)
-      for (size_t j = i + 1; j < est.size(); ++j) pairs.push_back({i, j});
-  } else {
-    pairs = closest_delta_pairs(delta_index(stamps_est, poses, o.unit), o.delta, true);
-  }
+  const std::vector<double>& stamps_est = est.stamps();
+  const std::vector<double>& stamps_gt = gt.stamps();
+  const PoseAt P = [&](size_t k) { return scaled(est.pose(k), o.scale); };
 
   std::vector<double> intervals;
+  intervals.reserve(stamps_gt.size());
   for (size_t k = 1; k < stamps_gt.size(); ++k)
     intervals.push_back(stamps_gt[k] - stamps_gt[k - 1]);
   const double max_time_diff = 2.0 * compute_stats(intervals).median;
 
-  // Nearest groundtruth pose of each estimated pose, or none if too far (computed once).
-  std::vector<long> gt_of(est.size(), -1);
+  // Nearest groundtruth pose of each estimated pose, or -1 if too far (computed once).
+  std::vector<int64_t> gt_of(est.size(), -1);
   for (size_t k = 0; k < est.size(); ++k) {
     const double t = stamps_est[k] + o.offset;
     const size_t g = find_closest_index(stamps_gt, t);
-    if (!(std::abs(stamps_gt[g] - t) > max_time_diff)) gt_of[k] = long(g);
+    if (!(std::abs(stamps_gt[g] - t) > max_time_diff)) gt_of[k] = int64_t(g);
   }
 
   std::vector<RpePair> out;
-  for (const auto& [i, j] : pairs) {
-    if (gt_of[i] < 0 || gt_of[j] < 0) continue;
-    const StampedPose& q_i = gt[size_t(gt_of[i])];
-    const StampedPose& q_j = gt[size_t(gt_of[j])];
+  size_t candidates = 0;
+  const auto add = [&](size_t i, size_t j) {
+    ++candidates;
+    if (gt_of[i] < 0 || gt_of[j] < 0) return;
+    const size_t g_i = size_t(gt_of[i]), g_j = size_t(gt_of[j]);
     // error44 = ominus(ominus(P_j, P_i), ominus(Q_j, Q_i)) with ominus(a, b) = a^-1 b.
     const Eigen::Isometry3d E =
-        (poses[j].inverse() * poses[i]).inverse() * (q_j.T_w_c.inverse() * q_i.T_w_c);
-    out.push_back({stamps_est[i], stamps_est[j], q_i.stamp, q_j.stamp, E.translation().norm(),
-                   rad_to_deg(trace_angle(E.rotation()))});
+        (P(j).inverse() * P(i)).inverse() * (gt.pose(g_j).inverse() * gt.pose(g_i));
+    out.push_back({stamps_est[i], stamps_est[j], stamps_gt[g_i], stamps_gt[g_j],
+                   E.translation().norm(), rad_to_deg(trace_angle(E.rotation()))});
+  };
+  if (o.all_pairs) {
+    for (size_t i = 0; i < est.size(); ++i)
+      for (size_t j = i + 1; j < est.size(); ++j) add(i, j);
+  } else {
+    // Pairs made as they are found (a million-pose list of them would cost 16 MB).
+    const std::vector<double> index =
+        o.unit == DeltaUnit::kSeconds ? std::vector<double>() : delta_index(stamps_est, P, o.unit);
+    const std::vector<double>& delta_of = o.unit == DeltaUnit::kSeconds ? stamps_est : index;
+    out.reserve(est.size());
+    for (size_t i = 0; i < delta_of.size(); ++i) {
+      const size_t j = find_closest_index(delta_of, delta_of[i] + o.delta);
+      if (j != delta_of.size() - 1) add(i, j);  // the script's `if j != len(traj_est)-1`
+    }
   }
-  return finish(std::move(out), est_name, pairs.size());
+  return finish(std::move(out), est_name, candidates);
 }
 
 RpeResult rpe_evo(const Trajectory& gt, const Trajectory& est,
                   const std::vector<IndexPair>& associated, const RpeOptions& o,
                   const std::string& est_name) {
-  std::vector<double> stamps;
-  Poses P, Q;
-  for (const IndexPair& a : associated) {
-    stamps.push_back(est[a.second].stamp);
-    P.push_back(est[a.second].T_w_c);
-    Q.push_back(gt[a.first].T_w_c);
-  }
-  std::vector<std::pair<size_t, size_t>> pairs;
-  if (!P.empty()) pairs = evo_pairs(stamps, P, o);
+  std::vector<double> stamps(associated.size());
+  for (size_t k = 0; k < associated.size(); ++k) stamps[k] = est.stamp(associated[k].second);
+  const PoseAt P = [&](size_t k) { return scaled(est.pose(associated[k].second), o.scale); };
+  const PoseAt Q = [&](size_t k) { return gt.pose(associated[k].first); };
+  const IdPairs pairs = evo_pairs(stamps, P, o);
   std::vector<RpePair> out;
+  out.reserve(pairs.size());
   for (const auto& [i, j] : pairs) {
     // evo's rpe_base: E = relative(Q_rel, P_rel), relative(a, b) = a^-1 b.
-    const Eigen::Isometry3d E = (Q[i].inverse() * Q[j]).inverse() * (P[i].inverse() * P[j]);
-    out.push_back({stamps[i], stamps[j], gt[associated[i].first].stamp,
-                   gt[associated[j].first].stamp, E.translation().norm(),
+    const Eigen::Isometry3d E = (Q(i).inverse() * Q(j)).inverse() * (P(i).inverse() * P(j));
+    out.push_back({stamps[i], stamps[j], gt.stamp(associated[i].first),
+                   gt.stamp(associated[j].first), E.translation().norm(),
                    rad_to_deg(rotation_angle(E))});
   }
   return finish(std::move(out), est_name, pairs.size());
@@ -227,8 +324,8 @@ std::string to_string(DeltaUnit unit) { return name_of(kDeltaUnitNames, unit); }
 
 DeltaUnit parse_delta_unit(const std::string& text) {
   if (const auto unit = value_named(kDeltaUnitNames, text)) return *unit;
-  throw std::invalid_argument("unknown delta unit '" + text + "' (use " +
-                              choices(kDeltaUnitNames) + ")");
+  throw std::invalid_argument("unknown delta unit '" + text + "' (use " + choices(kDeltaUnitNames) +
+                              ")");
 }
 
 std::string to_string(RpeConvention convention) { return name_of(kConventionNames, convention); }

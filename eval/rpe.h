@@ -7,8 +7,12 @@
 //     when either match is more than 2 x (median groundtruth interval) away.
 //     E = (P_j^-1 P_i)^-1 (Q_j^-1 Q_i), rotation angle = arccos((trace R - 1) / 2).
 //     The script randomly samples 10000 pairs when it finds more; slamkit never samples.
-//   evo: pairs over the associated pose list (eval::associate) as evo's filters choose them,
-//     last pair kept, E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), rotation angle from the SO(3) log.
+//   evo: evo's metrics.RPE on the associated pose list (eval::associate), pairs chosen as
+//     evo's filters.id_pairs_from_delta does (see evo_pairs in rpe.cpp for each unit),
+//     E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), rotation angle from the SO(3) log.
+// In both, estimated positions are first multiplied by `scale` (a Sim(3) alignment's, as
+// evo_rpe -as does before computing anything; rotation and translation of an alignment
+// cancel in relative poses), so metre windows measure the scaled path.
 // See eval/README.md for the details of each unit and of --all-pairs.
 #include <string>
 #include <vector>
@@ -31,6 +35,10 @@ struct RpeOptions {
   bool all_pairs = false;
   RpeConvention convention = RpeConvention::kTum;
   double offset = 0.0;  // added to estimate stamps (tum convention)
+  double scale = 1.0;   // estimated positions are scaled by this first (Sim(3) alignment)
+  // evo's rel_delta_tol (evo_rpe --delta_tol): all-pairs windows in metres and degrees accept
+  // a pair whose distance or angle is within rel_delta_tol * delta of delta.
+  double rel_delta_tol = 0.1;
 };
 
 struct RpePair {

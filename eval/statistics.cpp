@@ -21,12 +21,16 @@ ErrorStats compute_stats(const std::vector<double>& values) {
   for (double v : values) var += (v - s.mean) * (v - s.mean);
   s.std = std::sqrt(var / n);
 
-  std::vector<double> sorted = values;
-  std::sort(sorted.begin(), sorted.end());
-  const size_t mid = sorted.size() / 2;
-  s.median = sorted.size() % 2 ? sorted[mid] : 0.5 * (sorted[mid - 1] + sorted[mid]);
-  s.min = sorted.front();
-  s.max = sorted.back();
+  // The middle order statistics by selection (as numpy's median partitions), not a full sort.
+  std::vector<double> part = values;
+  const size_t mid = part.size() / 2;
+  std::nth_element(part.begin(), part.begin() + long(mid), part.end());
+  s.median = part.size() % 2
+                 ? part[mid]
+                 : 0.5 * (*std::max_element(part.begin(), part.begin() + long(mid)) + part[mid]);
+  const auto [min, max] = std::minmax_element(values.begin(), values.end());
+  s.min = *min;
+  s.max = *max;
   return s;
 }
 

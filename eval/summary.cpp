@@ -3,6 +3,8 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "eval/metrics_json.h"
+
 namespace slamkit::eval {
 namespace {
 
@@ -37,15 +39,21 @@ std::string ate_summary(const AteResult& ate, const Coverage& c) {
   append(out, "alignment %s on %zu pairs, scale %f\n", to_string(a.method).c_str(), a.poses_used,
          a.scale);
   append_stats(out, "absolute_translational_error", ate.trans, "m");
-  append_stats(out, "absolute_rotational_error", ate.rot_deg, "deg");
+  if (a.rotation_well_determined()) {
+    append_stats(out, "absolute_rotational_error", ate.rot_deg, "deg");
+  } else {
+    out += "absolute_rotational_error withheld: " + rotation_withheld_reason(a) + "\n";
+  }
   return out;
 }
 
 std::string rpe_summary(const RpeResult& rpe, const RpeOptions& o) {
   std::string out;
-  append(out, "compared_pose_pairs %zu pairs (delta %g %s%s, %s convention)\n", rpe.pairs.size(),
+  append(out, "compared_pose_pairs %zu pairs (delta %g %s%s, %s convention", rpe.pairs.size(),
          o.delta, to_string(o.unit).c_str(), o.all_pairs ? ", all pairs" : "",
          to_string(o.convention).c_str());
+  if (o.scale != 1.0) append(out, ", estimate scaled by %f", o.scale);
+  out += ")\n";
   append_stats(out, "translational_error", rpe.trans, "m");
   append_stats(out, "rotational_error", rpe.rot_deg, "deg");
   return out;

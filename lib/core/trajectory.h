@@ -11,31 +11,47 @@ struct StampedPose {
   Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
 };
 
+// Stored compactly (stamp, position, unit quaternion: 64 bytes a pose rather than 144 for a
+// stamp and a 4x4 matrix), so a million-pose file costs 64 MB; poses are rebuilt on access.
 class Trajectory {
  public:
   Trajectory() = default;
   // Sorts by time (stable, so equal stamps keep their order).
-  explicit Trajectory(std::vector<StampedPose> poses);
+  explicit Trajectory(const std::vector<StampedPose>& poses);
+  // Takes parallel arrays already sorted by stamp, with unit quaternions (a file reader's).
+  Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
+             std::vector<Eigen::Quaterniond> orientations);
 
   // Appends; the stamp must not be earlier than the last one.
   void push_back(double stamp, const Eigen::Isometry3d& T_w_c);
+  // Appends a pose given as position and unit quaternion (what a TUM line holds).
+  void push_back(double stamp, const Eigen::Vector3d& position,
+                 const Eigen::Quaterniond& orientation);
+  void reserve(size_t n);
 
-  size_t size() const { return poses_.size(); }
-  bool empty() const { return poses_.empty(); }
-  const StampedPose& operator[](size_t i) const { return poses_[i]; }
-  const std::vector<StampedPose>& poses() const { return poses_; }
-  std::vector<double> stamps() const;
-  double start_time() const { return poses_.front().stamp; }
-  double end_time() const { return poses_.back().stamp; }
+  size_t size() const { return stamps_.size(); }
+  bool empty() const { return stamps_.empty(); }
+  // The pose rebuilt from its compact form (a value, not a reference into the trajectory).
+  StampedPose operator[](size_t i) const { return {stamps_[i], pose(i)}; }
+  Eigen::Isometry3d pose(size_t i) const;
+  double stamp(size_t i) const { return stamps_[i]; }
+  const Eigen::Vector3d& position(size_t i) const { return positions_[i]; }
+  const Eigen::Quaterniond& orientation(size_t i) const { return orientations_[i]; }
+  std::vector<StampedPose> poses() const;
+  const std::vector<double>& stamps() const { return stamps_; }
+  double start_time() const { return stamps_.front(); }
+  double end_time() const { return stamps_.back(); }
 
-  // Index of the pose nearest in time to t if within max_diff seconds.
+  // Index of the pose nearest in time to t if within max_diff seconds (the earlier on a tie).
   std::optional<size_t> nearest(double t, double max_diff) const;
 
   // Total length of the camera path in metres.
   double path_length() const;
 
  private:
-  std::vector<StampedPose> poses_;
+  std::vector<double> stamps_;
+  std::vector<Eigen::Vector3d> positions_;
+  std::vector<Eigen::Quaterniond> orientations_;
 };
 
 }  // namespace slamkit
