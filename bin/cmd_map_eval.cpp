@@ -57,8 +57,8 @@ void run_map_eval(const MapEvalArgs& args) {
       "p95 %.4f m, max %.4f m\n",
       q.accuracy_mean, q.accuracy_median, q.accuracy_p95, q.accuracy_max);
   std::printf(
-      "completeness: %.1f %% of %zu visible surface samples within %.3f m (every "
-      "%d-th of %zu frames, every %d-th pixel, depth %.1f-%.1f m)\n",
+      "completeness: %.1f %% of %zu visible surface samples within %.3f m (frame step "
+      "%d over %zu frames, pixel stride %d, depth %.1f-%.1f m)\n",
       100.0 * q.completeness, q.surface_samples, s.radius, s.frame_step, poses.size(),
       s.pixel_stride, s.min_depth, s.max_depth);
   if (!args.json_path.empty()) {

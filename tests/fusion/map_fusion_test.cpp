@@ -22,24 +22,38 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One short synthetic sequence per test binary (rendering costs ~50 ms a frame a core).
+// One short synthetic sequence per test process (rendering costs ~50 ms a frame a core).
 constexpr int kFrames = 24;
 constexpr uint64_t kSeed = 3;
 
-const fs::path& rendered_sequence() {
-  static const fs::path folder = [] {
+// Rendered on first use, removed when the process ends (each is about 20 MB). One folder
+// per process: ctest runs each test in its own process, maybe in parallel.
+class RenderedSequence {
+ public:
+  RenderedSequence()
+      : folder_(fs::temp_directory_path() / "slamkit_tests" /
+                ("fusion_sequence_" + std::to_string(getpid()))) {
     synth::SequenceSpec spec;
     spec.preset = synth::Preset::kDesk;
     spec.frames = kFrames;
     spec.seed = kSeed;
-    // One folder per process: ctest runs each test in its own process, maybe in parallel.
-    spec.out = fs::temp_directory_path() / "slamkit_tests" /
-               ("fusion_sequence_" + std::to_string(getpid()));
-    fs::remove_all(spec.out);
+    spec.out = folder_;
+    fs::remove_all(folder_);
     synth::write_sequence(synth::test::shared_room(), spec);
-    return spec.out;
-  }();
-  return folder;
+  }
+  ~RenderedSequence() {
+    std::error_code ignored;
+    fs::remove_all(folder_, ignored);
+  }
+  const fs::path& folder() const { return folder_; }
+
+ private:
+  fs::path folder_;
+};
+
+const fs::path& rendered_sequence() {
+  static const RenderedSequence sequence;
+  return sequence.folder();
 }
 
 const TumSequence& sequence() {
