@@ -1,6 +1,7 @@
 #pragma once
 // Renders a preset into a folder in the TUM RGB-D layout: rgb/<stamp>.png, depth/<stamp>.png,
-// rgb.txt, depth.txt, associate.txt, groundtruth.txt (the exact poses) and calibration.yaml.
+// rgb.txt, depth.txt, associate.txt, groundtruth.txt (the exact poses), calibration.yaml and
+// synthetic.yaml (the preset and seed, so that tools can rebuild the scene).
 #include <cstdint>
 #include <filesystem>
 #include <functional>

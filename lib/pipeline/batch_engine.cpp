@@ -132,10 +132,15 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
     for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
       if (!result.frames[i].lost) frames.push_back({result.frames[i].index, result.frames[i].T_w_c});
   }
+  if (frames.empty()) return;
   result.fusion = fuse_map(sequence, frames, settings.fusion, ply_path,
                            [&](size_t done, size_t total) {
                              if (progress) progress("map", done, total);
                            });
+  // The keyframes' centres beside the map, so that a viewer shows both.
+  std::vector<FusionFrame> keyframes;
+  for (const Keyframe& k : result.map.keyframes()) keyframes.push_back({k.frame_index, k.T_w_c});
+  write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
   result.seconds.fusion = watch.lap() / 1000.0;
 }
 

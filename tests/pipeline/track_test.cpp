@@ -2,57 +2,30 @@
 // groundtruth, judged by the project's own evaluator (the acceptance numbers).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <set>
-#include <sstream>
-
-#include "datasets/synth/room_layout.h"
-#include "datasets/synth/sequence_writer.h"
-#include "eval/ate.h"
-#include "eval/association.h"
+#include "datasets/synth/trajectory_presets.h"
 #include "io/trajectory_io.h"
 #include "pipeline/batch_engine.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 #include "support/test_data.h"
+#include "pipeline_test_support.h"
 
 namespace slamkit {
 namespace {
 
 namespace fs = std::filesystem;
 
-double ate_rmse(const Trajectory& gt, const Trajectory& estimate) {
-  const auto pairs = eval::associate(gt, estimate, eval::AssociationOptions{});
-  EXPECT_EQ(pairs.size(), estimate.size()) << "every frame must have groundtruth";
-  return eval::compute_ate(gt, estimate, pairs, eval::AteOptions{}).trans.rmse;
-}
-
 // The front end alone, as `slamkit track` runs it.
 RunResult track_front_end(const TumSequence& seq, const Settings& settings = {}) {
   return track_sequence(seq, front_end_only(settings));
 }
 
-int count_lost(const RunResult& r) {
-  int lost = 0;
-  for (const TrackedFrame& f : r.frames) lost += f.lost;
-  return lost;
-}
+using test::ate_rmse;
+using test::count_lost;
+using test::file_text;
 
-// Renders a synthetic sequence once per test binary run (tests share them).
 fs::path synthetic(synth::Preset preset, int frames) {
-  const fs::path dir = fs::temp_directory_path() / "slamkit_tests" / "sequences" /
-                       (synth::preset_name(preset) + std::to_string(frames));
-  static std::set<fs::path> rendered;
-  if (!rendered.count(dir)) {
-    fs::remove_all(dir);
-    synth::SequenceSpec spec;
-    spec.preset = preset;
-    spec.frames = frames;
-    spec.out = dir;
-    synth::write_sequence(synth::make_furnished_room(), spec);
-    rendered.insert(dir);
-  }
-  return dir;
+  return test::synthetic_sequence(preset, frames);
 }
 
 TEST(Track, Fr2DeskFirst50WithinOrbSlam2Accuracy) {
@@ -86,13 +59,6 @@ TEST(Track, Fr1DeskFastMotionDistortedCamera) {
   const double rmse = ate_rmse(*seq.groundtruth(), result.trajectory());
   std::printf("fr1/desk 9 frames: ATE RMSE %.4f m\n", rmse);
   EXPECT_LE(rmse, 0.004);
-}
-
-std::string file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(Track, SameTrajectoryFileWithOneAndTwoThreads) {

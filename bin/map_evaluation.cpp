@@ -1,0 +1,66 @@
+#include "bin/map_evaluation.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "eval/alignment.h"
+#include "eval/association.h"
+#include "fusion/ply_cloud.h"
+#include "io/trajectory_io.h"
+#include "io/tum_sequence.h"
+
+namespace slamkit::cli {
+namespace {
+
+// The groundtruth pose of each frame, in frame order (frames without one are left out).
+std::vector<Eigen::Isometry3d> groundtruth_poses(const TumSequence& sequence) {
+  const Trajectory& gt = *sequence.groundtruth();
+  std::vector<Eigen::Isometry3d> poses;
+  for (size_t i = 0; i < sequence.size(); ++i)
+    if (const auto k = gt.nearest(sequence.stamp(i), 0.02)) poses.push_back(gt[*k].T_w_c);
+  return poses;
+}
+
+void align_into_groundtruth(std::vector<Eigen::Vector3f>& points, const Trajectory& gt,
+                            const std::filesystem::path& trajectory) {
+  const Trajectory est = read_tum_trajectory(trajectory).trajectory;
+  const eval::AssociationOptions options;
+  const auto pairs = eval::associate(gt, est, options);
+  eval::require_enough_pairs(pairs.size(), gt, est, "groundtruth", trajectory.string(), options);
+  const eval::Alignment alignment =
+      eval::align(gt, est, pairs, eval::AlignMethod::kSe3, 0, "groundtruth", trajectory.string());
+  for (Eigen::Vector3f& p : points) p = alignment.apply(p.cast<double>()).cast<float>();
+}
+
+}  // namespace
+
+std::optional<synth::MapQuality> evaluate_map(
+    const std::filesystem::path& map, const std::filesystem::path& sequence_folder,
+    const std::optional<std::filesystem::path>& trajectory,
+    const synth::MapQualitySettings& settings) {
+  const std::optional<synth::SyntheticInfo> info = synth::read_synthetic_info(sequence_folder);
+  if (!info) return std::nullopt;
+  const TumSequence sequence = TumSequence::open(sequence_folder);
+  if (!sequence.groundtruth())
+    throw_input_error((sequence_folder / "groundtruth.txt").string(), "not found");
+  std::vector<Eigen::Vector3f> points = read_ply_points(map);
+  if (trajectory) align_into_groundtruth(points, *sequence.groundtruth(), *trajectory);
+  return synth::evaluate_map_quality(points, synth::make_scene(*info),
+                                     groundtruth_poses(sequence), sequence.camera(), settings);
+}
+
+void print_map_quality(const synth::MapQuality& q) {
+  const synth::MapQualitySettings& s = q.settings;
+  std::printf(
+      "map quality accuracy (distance to the true surface of %zu points): mean %.1f mm, median "
+      "%.1f mm, p95 %.1f mm, max %.1f mm\n",
+      q.map_points, 1000 * q.accuracy_mean, 1000 * q.accuracy_median, 1000 * q.accuracy_p95,
+      1000 * q.accuracy_max);
+  std::printf(
+      "            completeness %.1f %% of %zu visible surface samples within %.0f mm (every "
+      "%d-th of %zu views, pixel stride %d, depth %.1f-%.1f m)\n",
+      100.0 * q.completeness, q.surface_samples, 1000 * s.radius, s.frame_step, q.views,
+      s.pixel_stride, s.min_depth, s.max_depth);
+}
+
+}  // namespace slamkit::cli
