@@ -30,11 +30,18 @@ struct BaProblem {
 };
 
 struct BaReport {
-  bool solved = false;      // false: nothing to optimise (or Ceres failed); input unchanged
-  int iterations = 0;       // LM iterations over all phases
-  double initial_cost = 0;  // Ceres cost before and after
+  bool solved = false;  // false: nothing to optimise (or Ceres failed); input unchanged
+  // LM iterations over all phases; fewer than scheduled only when a phase converged to the
+  // last bit (an iteration left the cost exactly unchanged).
+  int iterations = 0;
+  // Ceres cost at the start of the first phase (with the kernel, if robust) and at the end of
+  // the last (over the observations it kept): 0.5 sum of chi2 (or of the Huber of it).
+  double initial_cost = 0;
   double final_cost = 0;
-  std::vector<bool> outlier;  // per observation: failed the chi-square test at the end
+  // Per observation: failed the chi-square test (chi2_2d / chi2_3d) or had its point behind
+  // the camera, after the robust stage (then left out of the rest, as ORB-SLAM2 does) or at the
+  // end. Without a robust stage (global BA, robust = false) only the final test counts.
+  std::vector<bool> outlier;
   int num_outliers = 0;
   double seconds = 0;
 };
@@ -43,7 +50,8 @@ struct BaReport {
 // observations failing the chi-square test (or behind the camera) are dropped and the solve
 // repeated for refine_iterations without the kernel; points held fixed after
 // fix_points_after_iterations (paper). Updates problem.T_c_w and problem.p_w in place.
-// Single-threaded: the result is the same at any thread count.
+// Single-threaded: the result is the same at any thread count, bit for bit from run to run.
+// No shared state: concurrent calls on different problems are safe.
 BaReport local_bundle_adjustment(BaProblem& problem, const BaIntrinsics& intrinsics,
                                  const BaResidualSettings& residual,
                                  const LocalBaSettings& settings);
