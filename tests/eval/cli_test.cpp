@@ -112,6 +112,169 @@ TEST(EvalCli, SkippedLinesAndPartialCoverageAreReportedAndTheOverlapEvaluated) {
   EXPECT_NE(log.find("compared_pose_pairs 100 pairs"), std::string::npos) << log;
 }
 
+// --convention evo: association tolerance 0.01 s (evo's --t_max_diff), first of repeated
+// stamps kept, evo's RPE. Estimate stamps 15 ms late match under tum's 0.02 s, not evo's.
+TEST(EvalCli, EvoConventionSetsEvosDefaultsAndTheOptionsStillOverrideThem) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  const fs::path late = write_tum(dir / "late.txt", 100, 1000.015);
+  std::string log;
+  EXPECT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(late) + " --quiet", &log), 0)
+      << log;
+  EXPECT_EQ(
+      test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(late) + " --convention evo", &log),
+      2);
+  EXPECT_NE(log.find("matched groundtruth within 0.01 s (offset 0 s, evo association)"),
+            std::string::npos)
+      << log;
+  ASSERT_EQ(test::run_slamkit("eval all " + quoted(gt) + " " + quoted(late) +
+                                  " --convention evo --max-diff 0.02 --unit f --quiet --json " +
+                                  quoted(dir / "m.json"),
+                              &log),
+            0)
+      << log;
+  const nlohmann::json m = read_json(dir / "m.json");
+  EXPECT_EQ(m["settings"]["association"], "evo");
+  EXPECT_EQ(m["settings"]["duplicate_stamps"], "first");
+  EXPECT_EQ(m["settings"]["max_diff"], 0.02);
+  EXPECT_EQ(m["rpe"]["convention"], "evo");
+  EXPECT_EQ(m["rpe"]["pairs"], 99);  // evo keeps the last pair: (0,1) .. (98,99)
+}
+
+// The issue's monocular case: an estimate at half scale. `eval rpe --align sim3` scales it
+// first (scale 2 by construction), so consecutive-frame errors vanish; without, each step of
+// the estimate is half the groundtruth's.
+TEST(EvalCli, RpeWithSim3AlignmentScalesTheEstimateFirst) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 200, 1000.0);
+  std::ifstream in(gt);
+  std::ofstream half(dir / "half.txt");
+  half.precision(17);
+  for (std::string line; std::getline(in, line);) {
+    if (line[0] == '#') continue;
+    std::istringstream fields(line);
+    double v[8];
+    for (double& x : v) fields >> x;
+    half << v[0] << " " << v[1] / 2 << " " << v[2] / 2 << " " << v[3] / 2 << " " << v[4] << " "
+         << v[5] << " " << v[6] << " " << v[7] << "\n";
+  }
+  half.close();
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval rpe " + quoted(gt) + " " + quoted(dir / "half.txt") +
+                                  " --convention evo --unit f --align sim3 --json " +
+                                  quoted(dir / "m.json"),
+                              &log),
+            0)
+      << log;
+  const nlohmann::json m = read_json(dir / "m.json");
+  EXPECT_NEAR(m["rpe"]["scale"].get<double>(), 2.0, 1e-9);
+  EXPECT_LT(m["rpe"]["trans"]["max"].get<double>(), 1e-9);
+  EXPECT_NE(log.find("estimate scaled by 2.000000"), std::string::npos) << log;
+}
+
+TEST(EvalCli, NanosecondStampsAreDetectedAndConvertedOnRequest) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const auto write_ns = [&](const fs::path& path) {
+    std::ofstream out(path);
+    for (int k = 0; k < 90; ++k)
+      out << 1305031102000000000LL + 33333333LL * k << " " << std::cos(0.05 * k) << " "
+          << std::sin(0.05 * k) << " " << 0.01 * k << " 0 0 0 1\n";
+    return path;
+  };
+  const fs::path gt = write_ns(dir / "gt_ns.txt"), est = write_ns(dir / "est_ns.txt");
+  std::string log;
+  EXPECT_EQ(test::run_slamkit("eval rpe " + quoted(gt) + " " + quoted(est) + " --delta 1", &log),
+            2);
+  EXPECT_NE(log.find("gt_ns.txt: timestamps reach"), std::string::npos) << log;
+  EXPECT_NE(log.find("looks like nanoseconds; pass --time-unit ns"), std::string::npos) << log;
+  ASSERT_EQ(test::run_slamkit("eval rpe " + quoted(gt) + " " + quoted(est) +
+                                  " --time-unit ns --delta 1 --json " + quoted(dir / "m.json"),
+                              &log),
+            0)
+      << log;
+  EXPECT_EQ(read_json(dir / "m.json")["inputs"]["groundtruth"]["start"], 1305031102.0);
+  // A delta below the pose spacing (33 ms) pairs poses with themselves: warned.
+  ASSERT_EQ(
+      test::run_slamkit(
+          "eval rpe " + quoted(gt) + " " + quoted(est) + " --time-unit ns --delta 0.001", &log),
+      0)
+      << log;
+  EXPECT_NE(log.find("RPE delta 0.001 s is below the median interval between estimated poses"),
+            std::string::npos)
+      << log;
+}
+
+// Values that overflow the statistics are refused at the line; a metrics.json holding null
+// (as older versions wrote) makes `compare` name the file.
+TEST(EvalCli, OverflowingValuesAreRefusedAndCompareNamesTheFileItCannotUse) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  const fs::path est = write_tum(dir / "est.txt", 100, 1000.0, 0.0, "1004.0 1e308 0 0 0 0 0 1\n");
+  std::string log;
+  EXPECT_EQ(test::run_slamkit("eval all " + quoted(gt) + " " + quoted(est) + " --out " +
+                                  quoted(dir / "run") + " --no-plot",
+                              &log),
+            2);
+  EXPECT_NE(log.find("est.txt:102: field 2 is 1e308"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(dir / "run" / "metrics.json"));
+
+  fs::create_directories(dir / "old");
+  std::ofstream(dir / "old" / "metrics.json")
+      << R"({"ate": {"pairs": 100, "rmse": null, "mean": 0.1}, "settings": {}})";
+  EXPECT_EQ(test::run_slamkit("eval compare " + quoted(dir / "old") + " --out " + quoted(dir / "c"),
+                              &log),
+            2);
+  EXPECT_NE(log.find((dir / "old" / "metrics.json").string() + ": ate.rmse is null"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(test::run_slamkit(
+                "eval compare " + quoted(dir / "none") + " --out " + quoted(dir / "c"), &log),
+            2);
+  EXPECT_NE(log.find((dir / "none" / "metrics.json").string() + ": no metrics file"),
+            std::string::npos)
+      << log;
+}
+
+// The fr1/desk frames 18-26 (0.27 s of nearly straight motion) with a 3 mm estimate: the
+// rotation about the line of the positions is not fixed, so no rotational ATE is printed.
+TEST(EvalCli, NearlyCollinearPositionsWithholdTheRotationalError) {
+  SLAMKIT_REQUIRE_DATA(gt, "rgbd_dataset_freiburg1_desk_9frames/groundtruth.txt");
+  const fs::path dir = test::temp_dir("eval_cli");
+  std::ifstream in(gt);
+  std::ofstream cut(dir / "gt9.txt"), est(dir / "est9.txt");
+  cut.precision(17);
+  est.precision(17);
+  int k = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line[0] == '#') continue;
+    std::istringstream fields(line);
+    double v[8];
+    for (double& x : v) fields >> x;
+    // The 27 groundtruth poses around the 9 frames (1305031453.2 .. 1305031453.47).
+    if (v[0] < 1305031453.20 || v[0] > 1305031453.47) continue;
+    cut << line << "\n";
+    const double wobble = 0.003 * std::sin(2.1 * k++);
+    est << v[0] << " " << v[1] + wobble << " " << v[2] - wobble << " " << v[3] + 0.5 * wobble << " "
+        << v[4] << " " << v[5] << " " << v[6] << " " << v[7] << "\n";
+  }
+  cut.close();
+  est.close();
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval ate " + quoted(dir / "gt9.txt") + " " +
+                                  quoted(dir / "est9.txt") + " --json " + quoted(dir / "m.json"),
+                              &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("absolute_rotational_error withheld: the matched positions fix the "
+                     "alignment's rotation only to within"),
+            std::string::npos)
+      << log;
+  const nlohmann::json m = read_json(dir / "m.json");
+  EXPECT_FALSE(m["ate"].contains("rot_deg"));
+  EXPECT_TRUE(m["ate"].contains("rot_deg_withheld"));
+  EXPECT_GT(m["ate"]["alignment"]["rotation_ambiguity_deg"].get<double>(), 5.0);
+}
+
 TEST(EvalCli, MissingPlotPythonIsAnErrorOnlyWhenPlotsWereRequested) {
   const fs::path dir = test::temp_dir("eval_cli");
   const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);

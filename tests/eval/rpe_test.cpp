@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "eval/alignment.h"
 #include "eval/association.h"
 
 namespace slamkit::eval {
@@ -110,6 +111,102 @@ TEST(Rpe, EvoFramesUsesConsecutiveWindowsUnlessAllPairs) {
   EXPECT_EQ(rpe_of(gt, gt, o).pairs.size(), 4u);  // (0,5) (5,10) (10,15) (15,20)
   o.all_pairs = true;
   EXPECT_EQ(rpe_of(gt, gt, o).pairs.size(), 16u);  // (i, i+5) for i = 0..15
+}
+
+// Poses along x at the given positions (path length = position), one a second.
+Trajectory along_x(const std::vector<double>& xs) {
+  Trajectory t;
+  for (size_t k = 0; k < xs.size(); ++k) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation().x() = xs[k];
+    t.push_back(double(k), T);
+  }
+  return t;
+}
+
+std::vector<std::pair<double, double>> pair_stamps(const RpeResult& r) {
+  std::vector<std::pair<double, double>> out;
+  for (const RpePair& p : r.pairs) out.push_back({p.stamp_est_i, p.stamp_est_j});
+  return out;
+}
+
+// evo's filter_pairs_by_path(all_pairs=True), worked by hand with delta 1 m, tol 0.1 m on path
+// positions 0, 0.25, 0.5, 1.0625, 1.25, 2 (exact binary fractions):
+//   i=0: distances 0.25 0.5 1.0625 1.25 2 -> 1.0625 (off 0.0625) -> (0,3)
+//   i=1: 0.25 0.8125 1 1.75 -> 1 -> (1,4);  i=2: 0.5625 0.75 1.5 -> 0.75 is off 0.25 -> none
+//   i=3: 0.1875 0.9375 -> (3,5);  i=4: 0.75 -> none
+TEST(RpeEvo, AllPairsInMetresTakeTheClosestPathDistanceWithinTheTolerance) {
+  const Trajectory t = along_x({0, 0.25, 0.5, 1.0625, 1.25, 2.0});
+  RpeOptions o;
+  o.convention = RpeConvention::kEvo;
+  o.unit = DeltaUnit::kMetres;
+  o.all_pairs = true;
+  const RpeResult r = compute_rpe(t, t, associate(t, t, {AssociationMethod::kEvo, 0.01, 0}), o);
+  const std::vector<std::pair<double, double>> expected = {{0, 3}, {1, 4}, {3, 5}};
+  EXPECT_EQ(pair_stamps(r), expected);
+  o.rel_delta_tol = 0.3;  // 0.3 m now admits i=2 (0.75) and i=4 (0.75)
+  EXPECT_EQ(compute_rpe(t, t, associate(t, t, {AssociationMethod::kEvo, 0.01, 0}), o).pairs.size(),
+            5u);
+}
+
+// Degree windows accumulate the angle between neighbouring poses (evo since PR #426): a camera
+// turning 10 deg about z and back, six poses. Hand count with delta 19 deg: 10 + 10 >= 19 at
+// pose 2, again at pose 4, then only 10 -> pairs (0,2), (2,4). Absolute rotation vectors (the
+// old rule) would see no accumulated motion between 0 and 2.
+TEST(RpeEvo, DegreeWindowsAccumulateRelativeAnglesFromThePreviousPose) {
+  Trajectory t;
+  for (int k = 0; k < 6; ++k) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::AngleAxisd(k % 2 ? 10.0 * M_PI / 180.0 : 0.0, Eigen::Vector3d::UnitZ())
+                     .toRotationMatrix();
+    T.translation() = Eigen::Vector3d(0.1 * k, 0.02 * k * k, 0);
+    t.push_back(double(k), T);
+  }
+  RpeOptions o;
+  o.convention = RpeConvention::kEvo;
+  o.unit = DeltaUnit::kDegrees;
+  o.delta = 19;
+  const auto pairs = associate(t, t, {AssociationMethod::kEvo, 0.01, 0});
+  const std::vector<std::pair<double, double>> expected = {{0, 2}, {2, 4}};
+  EXPECT_EQ(pair_stamps(compute_rpe(t, t, pairs, o)), expected);
+  // All pairs: the direct angle between the poses within 10% of delta; delta 10 deg finds
+  // every (even, odd) pair: (0,1) (0,3) (0,5) (1,2) (1,4) (2,3) (2,5) (3,4) (4,5).
+  o.all_pairs = true;
+  o.delta = 10;
+  EXPECT_EQ(compute_rpe(t, t, pairs, o).pairs.size(), 9u);
+  o.delta = 181;
+  EXPECT_THROW(compute_rpe(t, t, pairs, o), std::invalid_argument);
+}
+
+// evo_rpe -as scales the estimate before RPE, and metre windows measure the scaled path. The
+// groundtruth moves 0.125 m a step along x, the estimate half that (scale 2). Delta 0.95 m:
+// on the scaled estimate a window is 8 steps (poses 8, 16, ..., 48 -> 5 pairs, error 0); on
+// the raw estimate 16 steps (16, 32, 48 -> 2 pairs), each 2 m of groundtruth against 1 m of
+// estimate: error 1 m.
+TEST(RpeEvo, Sim3ScaleIsAppliedBeforeChoosingPairsAndMeasuring) {
+  std::vector<double> x_gt, x_est;
+  for (int k = 0; k <= 48; ++k) {
+    x_gt.push_back(0.125 * k);
+    x_est.push_back(0.0625 * k);
+  }
+  const Trajectory gt = along_x(x_gt), est = along_x(x_est);
+  const auto pairs = associate(gt, est, {AssociationMethod::kEvo, 0.01, 0});
+  RpeOptions o;
+  o.convention = RpeConvention::kEvo;
+  o.unit = DeltaUnit::kMetres;
+  o.delta = 0.95;
+  const RpeResult raw = compute_rpe(gt, est, pairs, o);
+  ASSERT_EQ(raw.pairs.size(), 2u);
+  EXPECT_NEAR(raw.trans.max, 1.0, 1e-12);
+  EXPECT_NEAR(raw.trans.min, 1.0, 1e-12);
+
+  o.scale = align(gt, est, pairs, AlignMethod::kSim3).scale;
+  EXPECT_NEAR(o.scale, 2.0, 1e-12);
+  const RpeResult scaled = compute_rpe(gt, est, pairs, o);
+  const std::vector<std::pair<double, double>> expected = {
+      {8, 16}, {16, 24}, {24, 32}, {32, 40}, {40, 48}};
+  EXPECT_EQ(pair_stamps(scaled), expected);
+  EXPECT_LT(scaled.trans.max, 1e-12);
 }
 
 TEST(FindClosestIndex, ReproducesTheScriptsBinarySearch) {

@@ -111,9 +111,71 @@ TEST(TrajectoryIo, RejectsMalformedFilesNamingFileAndLine) {
   expect_error(write_text(dir, "seven.txt", "1 0 0 0 0 0 1\n"), "seven.txt:1: expected 8 fields");
   expect_error(write_text(dir, "nine.txt", "# h\n1 0 0 0 0 0 0 1 5\n"),
                "nine.txt:2: expected 8 fields");
-  expect_error(write_text(dir, "word.txt", "1 0 0 x 0 0 0 1\n"), "word.txt:1: field 4 is not a number");
+  expect_error(write_text(dir, "word.txt", "1 0 0 x 0 0 0 1\n"),
+               "word.txt:1: field 4 is not a number");
   expect_error(write_text(dir, "empty.txt", "# nothing\n"), "empty.txt: no valid pose");
   expect_error(dir / "missing.txt", "missing.txt: file not found");
+}
+
+TEST(TrajectoryIo, EvoKeepsTheFirstLineOfARepeatedTimestamp) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path =
+      write_text(dir, "dup.txt", "1 0 0 0 0 0 0 1\n1 5 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n");
+  const TrajectoryFile read =
+      read_tum_trajectory(path, {TimeUnit::kSeconds, DuplicateStamps::kKeepFirst});
+  ASSERT_EQ(read.trajectory.size(), 2u);
+  EXPECT_EQ(read.trajectory[0].T_w_c.translation().x(), 0.0);
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_NE(read.warnings[0].find("dup.txt:2: duplicate timestamp, line dropped (keeping line 1)"),
+            std::string::npos)
+      << read.warnings[0];
+}
+
+// Each of these was read without complaint (or echoed raw) before.
+TEST(TrajectoryIo, HostileBytesAreErrorsNamingFileAndLineWithTheTextEscaped) {
+  const fs::path dir = test::temp_dir("traj");
+  const char nul[] = "1 0 0 0 0 0 0 1\n1305031102.311267\0garbage 0 0 0 0 0 0 1\n";
+  expect_error(write_text(dir, "nul.txt", std::string(nul, sizeof nul - 1)),
+               "nul.txt:2: field 1 is not a number: '1305031102.311267\\x00garbage'");
+  expect_error(write_text(dir, "esc.txt", "1 0 0 \x1b[31mX\a 0 0 0 1\n"),
+               "esc.txt:1: field 4 is not a number: '\\x1B[31mX\\x07'");
+  expect_error(write_text(dir, "huge.txt", "1 0 0 0 0 0 0 1\n2 1e308 0 0 0 0 0 1\n"),
+               "huge.txt:2: field 2 is 1e308, beyond +-1e100");
+  try {
+    read_tum_trajectory(write_text(dir, "bell.txt", "1 0 \a\x1b 0 0 0 0 1\n"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find_first_of("\a\x1b"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TrajectoryIo, SkipsAUtf8ByteOrderMark) {
+  const fs::path dir = test::temp_dir("traj");
+  const TrajectoryFile read = read_tum_trajectory(write_text(dir, "bom.txt",
+                                                             "\xEF\xBB\xBF"
+                                                             "1.5 1 2 3 0 0 0 1\n"));
+  ASSERT_EQ(read.trajectory.size(), 1u);
+  EXPECT_EQ(read.trajectory[0].stamp, 1.5);
+}
+
+// Integer nanosecond and microsecond stamps are converted exactly (to the nearest double of
+// the decimal seconds, as a parser of "1305031102.311267" gives).
+TEST(TrajectoryIo, ConvertsNanosecondAndMicrosecondStamps) {
+  const fs::path dir = test::temp_dir("traj");
+  const TrajectoryFile ns = read_tum_trajectory(
+      write_text(dir, "ns.txt", "1305031102311267000 0 0 0 0 0 0 1\n"), {TimeUnit::kNanoseconds});
+  EXPECT_EQ(ns.trajectory[0].stamp, 1305031102.311267);
+  const TrajectoryFile us = read_tum_trajectory(
+      write_text(dir, "us.txt", "1305031102311267 0 0 0 0 0 0 1\n"), {TimeUnit::kMicroseconds});
+  EXPECT_EQ(us.trajectory[0].stamp, 1305031102.311267);
+}
+
+TEST(Printable, EscapesControlBytesAndC1ControlsAndCutsLongText) {
+  EXPECT_EQ(printable("a\x1b[0m\tb"), "a\\x1B[0m\\x09b");
+  EXPECT_EQ(printable("\xC2\x9B"
+                      "2J \xC3\xA9"),
+            "\\x9B2J \xC3\xA9");  // CSI escaped, e-acute kept
+  EXPECT_EQ(printable("abcdef", 3), "abc...");
 }
 
 }  // namespace
