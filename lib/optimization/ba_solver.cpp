@@ -28,11 +28,12 @@ ceres::Solver::Options solver_options(int iterations) {
   options.minimizer_type = ceres::TRUST_REGION;
   options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   options.max_num_iterations = iterations;
-  // The scheduled number of iterations (as ORB-SLAM2's g2o runs): no relative-change stop, so
-  // the iteration count never hinges on how close a tolerance test came to passing. A solve
-  // still ends early when an iteration leaves the cost exactly unchanged (converged to the
-  // last bit) or the gradient is exactly zero.
-  options.function_tolerance = 0;
+  // The scheduled iterations (as ORB-SLAM2's g2o runs them) unless the solve has converged to
+  // rounding: Ceres' default relative cost change of 1e-6 ended the whole-map BA after 4 of
+  // its 20 iterations with 15% more pose error; 1e-10 stops only where nothing moves any more
+  // (no measurable change in the tests) and saves a third of the time of a typical window.
+  // Deterministic either way: one thread gives bit-identical costs, hence the same stop.
+  options.function_tolerance = 1e-10;
   options.gradient_tolerance = 0;
   options.parameter_tolerance = 0;
   // One thread: Ceres' multi-threaded evaluation and Schur elimination sum in a
@@ -168,7 +169,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   if (!has_run_) initial_cost_ = summary.initial_cost;
   has_run_ = true;
   final_cost_ = summary.final_cost;
-  iterations_ += static_cast<int>(summary.iterations.size()) - 1;  // [0]: the starting point
+  // One linear solve per LM iteration; summary.iterations misses one that ends on the tolerance.
+  iterations_ += summary.num_linear_solves;
   return true;
 }
 

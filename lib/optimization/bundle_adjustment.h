@@ -31,8 +31,8 @@ struct BaProblem {
 
 struct BaReport {
   bool solved = false;  // false: nothing to optimise (or Ceres failed); input unchanged
-  // LM iterations over all phases; fewer than scheduled only when a phase converged to the
-  // last bit (an iteration left the cost exactly unchanged).
+  // LM iterations run over all phases; fewer than scheduled when a phase converged (an
+  // iteration changed the cost by at most 1e-10 of itself).
   int iterations = 0;
   // Ceres cost at the start of the first phase (with the kernel, if robust) and at the end of
   // the last (over the observations it kept): 0.5 sum of chi2 (or of the Huber of it).

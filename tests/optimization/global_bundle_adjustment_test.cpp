@@ -58,7 +58,8 @@ TEST(GlobalBundleAdjustment, RobustModeRejectsGrossOutliers) {
   const BaReport report =
       global_bundle_adjustment(problem, scene.intrinsics, scene.residual, settings);
   ASSERT_TRUE(report.solved);
-  EXPECT_EQ(report.iterations, settings.iterations + settings.refine_iterations);
+  EXPECT_LE(report.iterations, settings.iterations + settings.refine_iterations);
+  EXPECT_GE(report.iterations, 2);
   for (int i : moved) EXPECT_TRUE(report.outlier[i]) << i;
   // A point seen twice cannot tell which view is wrong: a few partners may go too.
   EXPECT_LE(report.num_outliers, static_cast<int>(moved.size()) + 5);

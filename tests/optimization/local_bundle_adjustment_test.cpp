@@ -115,7 +115,9 @@ TEST(LocalBundleAdjustment, PointsHeldFixedAfterGivenIterations) {
   BaProblem never_free = start;
   BaReport report = local_bundle_adjustment(never_free, scene.intrinsics, scene.residual, settings);
   ASSERT_TRUE(report.solved);
-  EXPECT_EQ(report.iterations, 15);
+  // Each phase runs at least one iteration and stops early once converged.
+  EXPECT_LE(report.iterations, 15);
+  EXPECT_GE(report.iterations, 2);
   EXPECT_EQ(std::memcmp(never_free.p_w.data(), start.p_w.data(),
                         sizeof(Eigen::Vector3d) * start.p_w.size()),
             0);
@@ -125,9 +127,8 @@ TEST(LocalBundleAdjustment, PointsHeldFixedAfterGivenIterations) {
   BaProblem after_two = start;
   report = local_bundle_adjustment(after_two, scene.intrinsics, scene.residual, settings);
   ASSERT_TRUE(report.solved);
-  // A pose-only stage may end early where its cost stops changing at all.
   EXPECT_LE(report.iterations, 15);
-  EXPECT_GE(report.iterations, 5);
+  EXPECT_GE(report.iterations, 3);
 
   // The points of the two-iteration run are exactly those of a run that stops after two
   // iterations: later iterations leave them alone.
