@@ -155,8 +155,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   ceres::Solver::Options options = solver_options(iterations);
   options.linear_solver_type =
       free_poses <= kMaxDenseSchurPoses ? ceres::DENSE_SCHUR : ceres::SPARSE_SCHUR;
-  // Eigen's sparse Cholesky: 10% less time than SuiteSparse's on the whole-map problem (150
-  // keyframes), whose reduced system is too small for CHOLMOD's supernodes to pay off.
+  // Eigen's sparse Cholesky took 10% less time than SuiteSparse's on a whole-map problem of
+  // 150 keyframes and 30,000 points.
   options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
   options.linear_solver_ordering = ordering;
   ceres::Solver::Summary summary;
