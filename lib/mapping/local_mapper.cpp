@@ -8,12 +8,22 @@
 
 namespace slamkit {
 
-LocalMapper::LocalMapper(const Camera& camera, const Settings& settings, Map& map)
-    : camera_(camera), settings_(settings), map_(map) {}
+LocalMapper::LocalMapper(const Camera& camera, const Settings& settings, Map& map,
+                         bool concurrent)
+    : camera_(camera),
+      settings_(settings),
+      map_(map),
+      launch_(concurrent ? std::launch::async : std::launch::deferred) {}
 
-MappingReport LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
+int LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
   Stopwatch watch;
   MappingReport report;
+  report.ba_wait_ms = 0;
+  {
+    Stopwatch wait;
+    finish();
+    report.ba_wait_ms = wait.lap();
+  }
   const int id = map_.add_keyframe(std::move(keyframe));
   report.keyframe = id;
   // The tracked points' descriptors and viewing directions now include this view.
@@ -29,11 +39,22 @@ MappingReport LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
 
   const LocalBaSettings& ba = settings_.optimization.local;
   if (ba.enabled && id >= 2 && motion >= ba.min_motion) {
-    report.ba = adjust_local_window(map_, id, camera_, settings_.optimization);
-    report.ba_run = report.ba.report.solved;
+    pending_ = std::make_unique<MapBaJob>(
+        MapBaJob::local_window(map_, id, camera_, settings_.optimization));
+    solving_ = std::async(launch_, [job = pending_.get()] { job->solve(); });
   }
   report.ms = watch.lap();
-  return report;
+  reports_.push_back(report);
+  return id;
+}
+
+void LocalMapper::finish() {
+  if (!pending_) return;
+  solving_.get();
+  MappingReport& report = reports_.back();  // the keyframe whose BA this is
+  report.ba = pending_->apply(map_);
+  report.ba_run = report.ba.report.solved;
+  pending_.reset();
 }
 
 int LocalMapper::create_points(int keyframe) {

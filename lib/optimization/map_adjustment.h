@@ -2,6 +2,8 @@
 // Bundle adjustment problems built from the map (stella_vslam's local_bundle_adjuster and
 // global_bundle_adjuster): which keyframes move, which stay fixed, which observations count;
 // the solution and the outlier verdicts are written back into the map.
+#include <vector>
+
 #include "core/camera.h"
 #include "core/settings/optimization_settings.h"
 #include "map/map.h"
@@ -15,12 +17,43 @@ struct MapAdjustment {
   int removed_observations = 0;  // outliers unlinked from their keyframes
 };
 
-// Local BA around `keyframe` (ORBSLAM2_BACKEND.md section 3): it and its covisible neighbours
-// move (keyframe 0 never does), every other keyframe observing their points is fixed.
+// A bundle adjustment copied out of the map: solve() needs nothing of the map, so it can run
+// on another thread while tracking goes on; apply() writes the result back. The map may gain
+// visible/found counts in between, but no keyframe, point or observation.
+class MapBaJob {
+ public:
+  // Local BA around `keyframe` (ORBSLAM2_BACKEND.md section 3): it and its covisible
+  // neighbours move (keyframe 0 never does), every other keyframe observing their points is
+  // fixed.
+  static MapBaJob local_window(const Map& map, int keyframe, const Camera& camera,
+                               const OptimizationSettings& settings);
+  // Global BA: every keyframe and point, keyframe 0 fixed.
+  static MapBaJob whole_map(const Map& map, const Camera& camera,
+                            const OptimizationSettings& settings);
+
+  void solve();
+  MapAdjustment apply(Map& map) const;
+
+ private:
+  struct Link {  // a problem observation's keyframe and point in the map
+    int keyframe, point;
+  };
+  MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const Camera& camera,
+           const OptimizationSettings& settings, bool local);
+
+  BaProblem problem_;
+  std::vector<int> keyframes_;  // problem pose -> map keyframe
+  std::vector<int> points_;     // problem point -> map point
+  std::vector<Link> links_;     // problem observation -> map keyframe and point
+  BaIntrinsics intrinsics_;
+  OptimizationSettings settings_;
+  bool local_ = true;
+  BaReport report_;
+};
+
+// Build, solve and apply at once.
 MapAdjustment adjust_local_window(Map& map, int keyframe, const Camera& camera,
                                   const OptimizationSettings& settings);
-
-// Global BA: every keyframe and point, keyframe 0 fixed.
 MapAdjustment adjust_whole_map(Map& map, const Camera& camera,
                                const OptimizationSettings& settings);
 

@@ -54,7 +54,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   const Camera& camera = sequence.camera();
   const WindowPattern pattern({camera.width, camera.height}, settings.keyframes);
   Tracker tracker(camera, settings, result.map);
-  LocalMapper mapper(camera, settings, result.map);
+  LocalMapper mapper(camera, settings, result.map, result.threads > 1);
   const size_t chunk = size_t(std::max(1, settings.pipeline.chunk_frames));
 
   // The next chunk is prepared while this one is tracked, so both cores stay busy. Frames
@@ -85,13 +85,10 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
         since_keyframe.push_back(record.T_w_c);
         const double motion = quasi_static_motion(
             since_keyframe, settings.optimization.local.motion_rotation_weight);
-        const MappingReport report =
+        record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
-        record.reference_keyframe = report.keyframe;
         record.T_ref_c = Eigen::Isometry3d::Identity();
-        timing.mapping_ms = report.ms;
-        result.seconds.local_ba += report.ba.report.seconds;
-        result.keyframe_reports.push_back(report);
+        timing.mapping_ms = mapper.reports().back().ms;
         last_keyframe_frame = result.frames.size();
       }
       result.tracked_poses.push_back(record.T_w_c);
@@ -101,6 +98,12 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
     }
     result.seconds.track += watch.lap() / 1000.0;
   }
+  Stopwatch last_ba;
+  mapper.finish();
+  result.seconds.track += last_ba.lap() / 1000.0;
+  result.keyframe_reports = mapper.reports();
+  for (const MappingReport& r : result.keyframe_reports)
+    result.seconds.local_ba += r.ba.report.seconds;
   // Local BA's corrections reach the frames tracked before them.
   if (settings.optimization.local.enabled) reanchor_frames(result);
   result.seconds.total = total.lap() / 1000.0;

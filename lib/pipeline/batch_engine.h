@@ -25,7 +25,7 @@ struct FrameTiming {
 struct StageTimes {
   double prepare = 0;    // parallel stage, summed over chunks (overlaps tracking)
   double track = 0;      // tracking and mapping, local BA included
-  double local_ba = 0;   // the local BA part of `track`
+  double local_ba = 0;   // local BA solving, beside tracking (or inside it with one thread)
   double global_ba = 0;
   double fusion = 0;
   double write = 0;

@@ -48,7 +48,8 @@ void write_tracking_csv(const fs::path& path, const RunResult& result) {
 void write_mapping_csv(const fs::path& path, const RunResult& result) {
   std::ofstream out(path);
   out << "keyframe,frame,new_points,culled_points,fused_points,local_ba,free_keyframes,"
-         "fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,ba_ms,mapping_ms\n";
+         "fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,ba_ms,mapping_ms,"
+         "ba_wait_ms\n";
   const auto& keyframes = result.map.keyframes();
   for (const MappingReport& r : result.keyframe_reports) {
     const MapAdjustment& ba = r.ba;
@@ -56,7 +57,7 @@ void write_mapping_csv(const fs::path& path, const RunResult& result) {
         << ',' << r.culled_points << ',' << r.fused_points << ',' << int(r.ba_run) << ','
         << ba.free_keyframes << ',' << ba.fixed_keyframes << ',' << ba.points << ','
         << ba.observations << ',' << ba.report.iterations << ',' << ba.removed_observations << ','
-        << ba.report.seconds * 1000.0 << ',' << r.ms << '\n';
+        << ba.report.seconds * 1000.0 << ',' << r.ms << ',' << r.ba_wait_ms << '\n';
   }
   if (!out) throw_input_error(path.string(), "cannot write file");
 }

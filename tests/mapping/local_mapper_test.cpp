@@ -58,8 +58,9 @@ Eigen::Isometry3d moved(double x) {
 TEST(LocalMapper, KeypointsWithDepthMakePointsAtTheirBackProjection) {
   const World world(50);
   Map map;
-  LocalMapper mapper(world.camera, without_ba(), map);
-  const MappingReport report = mapper.insert_keyframe(world.view(moved(0.1), 0), 1.0);
+  LocalMapper mapper(world.camera, without_ba(), map, false);
+  mapper.insert_keyframe(world.view(moved(0.1), 0), 1.0);
+  const MappingReport& report = mapper.reports().back();
   EXPECT_EQ(report.new_points, int(world.points.size()));
   for (size_t i = 0; i < world.points.size(); ++i)
     EXPECT_LT((map.point(map.keyframe(0).point_ids[i]).p_w - world.points[i]).norm(), 1e-9);
@@ -68,11 +69,12 @@ TEST(LocalMapper, KeypointsWithDepthMakePointsAtTheirBackProjection) {
 TEST(LocalMapper, TrackedPointsGainObservationsAndLinkTheKeyframes) {
   const World world(50);
   Map map;
-  LocalMapper mapper(world.camera, without_ba(), map);
+  LocalMapper mapper(world.camera, without_ba(), map, false);
   mapper.insert_keyframe(world.view(Eigen::Isometry3d::Identity(), 0), 1.0);
   Keyframe second = world.view(moved(0.05), 1);
   second.point_ids = map.keyframe(0).point_ids;  // tracking matched every point
-  const MappingReport report = mapper.insert_keyframe(std::move(second), 1.0);
+  mapper.insert_keyframe(std::move(second), 1.0);
+  const MappingReport& report = mapper.reports().back();
   EXPECT_EQ(report.new_points, 0);
   EXPECT_EQ(map.point(0).num_observations(), 2);
   EXPECT_EQ(map.keyframe(1).shared_points.at(0), 50);
@@ -82,13 +84,14 @@ TEST(LocalMapper, TrackedPointsGainObservationsAndLinkTheKeyframes) {
 TEST(LocalMapper, DuplicatesOfTheSamePointAreFused) {
   const World world(60);
   Map map;
-  LocalMapper mapper(world.camera, without_ba(), map);
+  LocalMapper mapper(world.camera, without_ba(), map, false);
   mapper.insert_keyframe(world.view(Eigen::Isometry3d::Identity(), 0), 1.0);
   // Tracking matched only the first 30 points: the second keyframe links those and makes
   // fresh points for the other 30, which are duplicates of keyframe 0's.
   Keyframe second = world.view(moved(0.05), 1);
   for (size_t i = 0; i < 30; ++i) second.point_ids[i] = map.keyframe(0).point_ids[i];
-  const MappingReport report = mapper.insert_keyframe(std::move(second), 1.0);
+  mapper.insert_keyframe(std::move(second), 1.0);
+  const MappingReport& report = mapper.reports().back();
   EXPECT_EQ(report.new_points, 30);
   EXPECT_EQ(report.fused_points, 30);
   EXPECT_EQ(map.num_good_points(), 60);
@@ -100,7 +103,7 @@ TEST(LocalMapper, PointsSeenByOneKeyframeAreCulledAfterTwoMore) {
   Settings settings = without_ba();
   settings.mapping.fuse_duplicates = false;
   Map map;
-  LocalMapper mapper(world.camera, settings, map);
+  LocalMapper mapper(world.camera, settings, map, false);
   mapper.insert_keyframe(world.view(Eigen::Isometry3d::Identity(), 0), 1.0);
   // Later keyframes track only the first 20 points; their own new points are elsewhere.
   for (size_t k = 1; k <= 2; ++k) {
@@ -108,7 +111,8 @@ TEST(LocalMapper, PointsSeenByOneKeyframeAreCulledAfterTwoMore) {
     for (size_t i = 0; i < next.depths.size(); ++i)
       next.point_ids[i] = i < 20 ? map.keyframe(0).point_ids[i] : -1;
     for (size_t i = 20; i < next.depths.size(); ++i) next.depths[i] = 0;  // no new points
-    const MappingReport report = mapper.insert_keyframe(std::move(next), 1.0);
+    mapper.insert_keyframe(std::move(next), 1.0);
+    const MappingReport& report = mapper.reports().back();
     EXPECT_EQ(report.culled_points, k == 2 ? 20 : 0) << "keyframe " << k;
   }
   EXPECT_EQ(map.num_good_points(), 20);
