@@ -1,0 +1,33 @@
+#pragma once
+// Baselines (results/baselines/<suite>/<entry>.json): an entry's metrics as a known-good run
+// measured them, with where they came from (slamkit version, settings hash, machine, date).
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "eval/regression/metrics.h"
+
+namespace slamkit::regress {
+
+struct Provenance {
+  std::string version;        // `git describe --always --dirty --tags`, else the release
+  std::string settings_hash;  // FNV-1a 64 of the run's settings.yaml
+  std::string machine;        // CPU model, cores, kernel
+  std::string date;           // UTC, ISO 8601
+};
+
+struct Baseline {
+  Provenance provenance;
+  std::string sequence;  // SequenceSource::describe()
+  RunMetrics metrics;
+};
+
+// Nothing when the file does not exist; InputError naming it when it is malformed.
+std::optional<Baseline> read_baseline(const std::filesystem::path& file);
+void write_baseline(const std::filesystem::path& file, const Baseline& baseline);
+
+std::string slamkit_version();
+std::string machine_description();
+std::string utc_now_iso();
+
+}  // namespace slamkit::regress

@@ -1,0 +1,109 @@
+// history.csv and the plots drawn with eval's scripts.
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "eval/plotting.h"
+#include "eval/regression/report.h"
+
+namespace slamkit::regress {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kFixedColumns = "date,suite,entry,version,settings_hash,run_finished";
+
+// suite,entry,run_finished of every line already in the file.
+std::set<std::string> recorded_runs(const fs::path& file) {
+  std::set<std::string> runs;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream text(line);
+    for (std::string field; std::getline(text, field, ',');) fields.push_back(field);
+    if (fields.size() >= 6) runs.insert(fields[1] + "," + fields[2] + "," + fields[5]);
+  }
+  return runs;
+}
+
+// Versions and hashes hold no commas; a description could, so fields are cleaned.
+std::string field(std::string text) {
+  for (char& c : text)
+    if (c == ',' || c == '\n' || c == '"') c = ' ';
+  return text;
+}
+
+std::optional<fs::path> draw(const std::string& script, const std::vector<std::string>& args,
+                             const fs::path& png, const std::string& what) {
+  const eval::PlotPython python = eval::find_plot_python();
+  if (!python.interpreter) {
+    std::cerr << "slamkit: note: no " << what << " drawn: " << python.problem << "\n";
+    return std::nullopt;
+  }
+  std::vector<std::string> full = {eval::plot_script(script).string()};
+  full.insert(full.end(), args.begin(), args.end());
+  const int code = eval::run_program(*python.interpreter, full);
+  if (code != 0 || !fs::exists(png)) {
+    std::cerr << "slamkit: note: no " << what << " drawn: " << script << " failed (exit code "
+              << code << ")\n";
+    return std::nullopt;
+  }
+  return png;
+}
+
+}  // namespace
+
+void append_history(const fs::path& file, const SuiteReport& report) {
+  const bool fresh = !fs::exists(file) || fs::file_size(file) == 0;
+  const std::set<std::string> known = fresh ? std::set<std::string>() : recorded_runs(file);
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  std::ofstream out(file, std::ios::app);
+  if (!out) throw_input_error(file.string(), "cannot append to file");
+  if (fresh) {
+    out << kFixedColumns;
+    for (const MetricInfo& m : tracked_metrics()) out << "," << m.key;
+    out << "\n";
+  }
+  for (const EntryResult& e : report.entries) {
+    if (!e.run.ok) continue;
+    const std::string key = report.suite->name + "," + e.entry->name + "," + e.run.finished;
+    if (known.count(key)) continue;
+    out << field(report.current.date) << "," << report.suite->name << "," << e.entry->name << ","
+        << field(report.current.version) << "," << e.settings_hash << "," << e.run.finished;
+    for (const MetricInfo& m : tracked_metrics()) {
+      out << ",";
+      if (auto it = e.metrics.find(m.key); it != e.metrics.end()) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.9g", it->second);
+        out << value;
+      }
+    }
+    out << "\n";
+  }
+}
+
+std::optional<fs::path> draw_comparison(const SuiteReport& report) {
+  std::vector<std::string> args = {"--out", report.out.string(), "--title", report.suite->name};
+  int runs = 0;
+  for (const EntryResult& e : report.entries)
+    if (e.run.ok && fs::exists(e.run.dir / "errors.csv")) {
+      args.insert(args.end(), {"--run", e.entry->name, e.run.dir.string()});
+      ++runs;
+    }
+  if (runs == 0) return std::nullopt;
+  return draw("plot_compare.py", args, report.out / "ate_comparison.png", "comparison plot");
+}
+
+std::optional<fs::path> draw_history(const fs::path& history, const SuiteReport& report) {
+  if (!fs::exists(history)) return std::nullopt;
+  return draw(
+      "plot_history.py",
+      {"--history", history.string(), "--suite", report.suite->name, "--out", report.out.string()},
+      report.out / "ate_history.png", "history plot");
+}
+
+}  // namespace slamkit::regress

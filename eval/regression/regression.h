@@ -1,0 +1,34 @@
+#pragma once
+// `slamkit regress`: load a suite, run its entries, compare with the baselines, write the
+// reports, optionally store new baselines. bin/cmd_regress.cpp only fills the options.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slamkit::regress {
+
+struct RegressOptions {
+  std::filesystem::path suite_file;
+  std::filesystem::path out;
+  std::optional<std::filesystem::path> data_dir;  // relative folders, TUM downloads
+  std::filesystem::path baselines_dir;            // empty: <suite folder>/baselines/<suite name>
+  std::filesystem::path history_file;             // empty: <suite folder>/history.csv
+  int jobs = 1;
+  int threads = 0;  // per run; 0: the cores shared out among the jobs
+  bool force = false;
+  bool update_baselines = false;
+  bool download = true;
+  std::filesystem::path slamkit;          // the executable that runs the entries
+  std::filesystem::path download_script;  // datasets/download_tum.sh
+  std::vector<std::string> presets;       // synthetic preset names
+};
+
+// The exit code: 0 when every entry ran and is within tolerance (or baselines were updated),
+// 1 on a regression or a failed run. Bad input (the suite, a baseline file) is an InputError.
+int run_regression(const RegressOptions& options);
+
+// datasets/download_tum.sh in the source tree, or $SLAMKIT_DOWNLOAD_SCRIPT.
+std::filesystem::path default_download_script();
+
+}  // namespace slamkit::regress

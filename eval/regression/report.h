@@ -1,0 +1,58 @@
+#pragma once
+// A suite's results as data, and the files written from them: report.md and a self-contained
+// report.html for people, junit.xml for CI dashboards, a line per entry in history.csv.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eval/regression/baseline.h"
+#include "eval/regression/comparison.h"
+#include "eval/regression/runner.h"
+#include "eval/regression/suite.h"
+
+namespace slamkit::regress {
+
+struct EntryResult {
+  const SuiteEntry* entry = nullptr;
+  EntryRun run;  // run.ok false: run.error says why, no metrics
+  RunMetrics metrics;
+  std::string settings_hash;         // of the run's settings.yaml
+  std::optional<Baseline> baseline;  // as it was before this run
+  std::vector<MetricComparison> comparisons;
+
+  bool failed() const;  // the run failed or a metric regressed or went missing
+  bool has_warning() const;
+};
+
+struct SuiteReport {
+  const Suite* suite = nullptr;
+  Provenance current;  // this run's version, machine and date (settings hash per entry)
+  std::vector<EntryResult> entries;
+  std::filesystem::path out;              // the report folder
+  std::filesystem::path comparison_plot;  // empty when not drawn
+  std::filesystem::path history_plot;
+  bool baselines_updated = false;
+
+  int failures() const;
+};
+
+void write_report_markdown(const std::filesystem::path& file, const SuiteReport& report);
+// Plots embedded as base64 PNG: the file is viewed without the run folders or a network.
+void write_report_html(const std::filesystem::path& file, const SuiteReport& report);
+// One <testcase> per entry and metric (plus one for the run itself), <failure> on a regression.
+void write_junit(const std::filesystem::path& file, const SuiteReport& report);
+
+// Appends a line per entry (date, suite, entry, version, settings hash, the run's finish time,
+// every tracked metric) unless a line for that run is already there: a resumed suite does not
+// count its reused runs twice.
+void append_history(const std::filesystem::path& file, const SuiteReport& report);
+
+// Plots drawn with eval's scripts: the box plot across entries (plot_compare.py) and ATE over
+// versions (plot_history.py). Each returns the PNG, or nothing (with a note on stderr) when
+// no plotting Python is found or the script failed.
+std::optional<std::filesystem::path> draw_comparison(const SuiteReport& report);
+std::optional<std::filesystem::path> draw_history(const std::filesystem::path& history,
+                                                  const SuiteReport& report);
+
+}  // namespace slamkit::regress

@@ -1,0 +1,219 @@
+#include "eval/regression/runner.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "core/error.h"
+#include "eval/checksum.h"
+#include "eval/regression/baseline.h"
+#include "eval/regression/process.h"
+#include "io/settings_yaml.h"
+
+namespace slamkit::regress {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::mutex print_mutex;
+
+void say(const char* format, const std::string& a, const std::string& b = "") {
+  std::lock_guard<std::mutex> lock(print_mutex);
+  std::printf(format, a.c_str(), b.c_str());
+  std::fflush(stdout);
+}
+
+// Calls work(i) for i in [0, n) on `jobs` threads.
+template <class Work>
+void parallel_for(size_t n, int jobs, Work work) {
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < std::max(1, std::min(jobs, int(n))); ++t)
+    threads.emplace_back([&] {
+      for (size_t i; (i = next++) < n;) work(i);
+    });
+  for (std::thread& t : threads) t.join();
+}
+
+// Writes via a temporary file and a rename, so the file is either whole or absent.
+void write_atomically(const fs::path& file, const std::string& text) {
+  const fs::path temp = file.string() + ".tmp";
+  {
+    std::ofstream out(temp);
+    out << text;
+    if (!out) throw_input_error(temp.string(), "cannot write file");
+  }
+  fs::rename(temp, file);
+}
+
+std::string sequence_key(const SequenceSource& s) {
+  if (s.kind == SequenceSource::Kind::kSynthetic)
+    return "synthetic_" + s.preset + "_" + std::to_string(s.frames) + "_seed" +
+           std::to_string(s.seed);
+  return s.folder.string();
+}
+
+// A synthetic sequence is rendered once per output folder (a marker says it is whole); a TUM
+// sequence goes through the download script, which fetches, checks and skips what is there.
+struct SequenceJob {
+  SequenceSource source;
+  fs::path folder;
+  std::string error;
+};
+
+void prepare_sequence(SequenceJob& job, const RunnerOptions& options, int threads) {
+  const SequenceSource& s = job.source;
+  const fs::path logs = options.out / "sequences";
+  fs::create_directories(logs);
+  if (s.kind == SequenceSource::Kind::kSynthetic) {
+    const std::string name = sequence_key(s);
+    job.folder = logs / name;
+    const fs::path marker = logs / (name + ".complete");
+    if (fs::exists(marker) && fs::exists(job.folder)) return;
+    fs::remove_all(job.folder);
+    const fs::path log = logs / (name + ".log");
+    fs::remove(log);
+    say("render      %s\n", s.describe());
+    const int code =
+        run_logged(options.slamkit.string(),
+                   {"synth", "--preset", s.preset, "--frames", std::to_string(s.frames), "--seed",
+                    std::to_string(s.seed), "--threads", std::to_string(threads), "--out",
+                    job.folder.string()},
+                   log);
+    if (code != 0) {
+      job.error =
+          "rendering failed (exit code " + std::to_string(code) + "; see " + log.string() + ")";
+      return;
+    }
+    write_atomically(marker, s.describe() + "\n");
+  } else if (s.kind == SequenceSource::Kind::kTum) {
+    job.folder = s.folder;
+    const fs::path log = logs / (s.tum_name + ".download.log");
+    fs::remove(log);
+    say("fetch       %s into %s\n", s.tum_name, s.folder.parent_path().string());
+    const int code = run_logged(
+        "bash", {options.download_script.string(), s.folder.parent_path().string(), s.tum_name},
+        log);
+    if (code != 0)
+      job.error = "download or check of " + s.tum_name + " failed (exit code " +
+                  std::to_string(code) + "; see " + log.string() + ")";
+  } else {
+    job.folder = s.folder;
+  }
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return text;
+}
+
+void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::string& binary_hash,
+               const RunnerOptions& options, int threads, EntryRun& run) {
+  run.dir = options.out / "runs" / entry.name;
+  std::vector<std::string> args = {"run",       sequence.string(),      "--out", run.dir.string(),
+                                   "--threads", std::to_string(threads)};
+  // What the run depends on besides the sequence: the settings and the executable.
+  std::string fingerprint =
+      entry.sequence.describe() + " | " + sequence.string() + " | slamkit " + binary_hash;
+  if (entry.has_overrides) {
+    const fs::path settings = options.out / "settings" / (entry.name + ".yaml");
+    write_settings_yaml(settings, entry.settings);
+    fingerprint += " | settings " + eval::fnv1a64_file(settings);
+    args.insert(args.end(), {"--settings", settings.string()});
+  }
+  if (entry.sequence.depth_scale) {
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%.17g", *entry.sequence.depth_scale);
+    args.insert(args.end(), {"--depth-scale", scale});
+  }
+  if (!entry.sequence.calibration.empty())
+    args.insert(args.end(), {"--calibration", entry.sequence.calibration.string()});
+
+  const fs::path marker = run.dir / kEntryMarker;
+  if (!options.force && fs::exists(marker)) {
+    try {
+      const json done = json::parse(read_text(marker));
+      if (done.value("fingerprint", "") == fingerprint) {
+        run.ok = run.reused = true;
+        run.finished = done.value("finished", "");
+        run.seconds = done.value("seconds", 0.0);
+        say("reuse       %s (finished %s)\n", entry.name, run.finished);
+        return;
+      }
+    } catch (const json::exception&) {
+      // A damaged marker: the run is done again.
+    }
+  }
+  fs::remove_all(run.dir);
+  fs::create_directories(run.dir);
+  const fs::path log = run.dir / "run.log";
+  say("run         %s (log %s)\n", entry.name, log.string());
+  const auto start = std::chrono::steady_clock::now();
+  const int code = run_logged(options.slamkit.string(), args, log);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (code != 0) {
+    run.error =
+        "slamkit run exited with code " + std::to_string(code) + " (see " + log.string() + ")";
+    say("FAILED      %s: %s\n", entry.name, run.error);
+    return;
+  }
+  run.ok = true;
+  run.finished = utc_now_iso();
+  json done = {{"entry", entry.name},
+               {"fingerprint", fingerprint},
+               {"finished", run.finished},
+               {"seconds", run.seconds},
+               {"command", args}};
+  write_atomically(marker, done.dump(2) + "\n");
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.1f", run.seconds);
+  say("done        %s in %s s\n", entry.name, seconds);
+}
+
+}  // namespace
+
+std::vector<EntryRun> run_entries(const Suite& suite, const RunnerOptions& options) {
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = options.threads > 0 ? options.threads : std::max(1, cores / options.jobs);
+
+  std::map<std::string, size_t> index;
+  std::vector<SequenceJob> sequences;
+  for (const SuiteEntry& e : suite.entries)
+    if (index.emplace(sequence_key(e.sequence), sequences.size()).second)
+      sequences.push_back({e.sequence, {}, {}});
+  parallel_for(sequences.size(), options.jobs, [&](size_t i) {
+    try {
+      prepare_sequence(sequences[i], options, threads);
+    } catch (const std::exception& e) {
+      sequences[i].error = e.what();
+    }
+  });
+
+  const std::string binary_hash = eval::fnv1a64_file(options.slamkit);
+  std::vector<EntryRun> runs(suite.entries.size());
+  parallel_for(runs.size(), options.jobs, [&](size_t i) {
+    const SuiteEntry& entry = suite.entries[i];
+    const SequenceJob& sequence = sequences[index.at(sequence_key(entry.sequence))];
+    runs[i].dir = options.out / "runs" / entry.name;
+    if (!sequence.error.empty()) {
+      runs[i].error = sequence.error;
+      return;
+    }
+    try {
+      run_entry(entry, sequence.folder, binary_hash, options, threads, runs[i]);
+    } catch (const std::exception& e) {
+      runs[i].ok = false;
+      runs[i].error = e.what();
+    }
+  });
+  return runs;
+}
+
+}  // namespace slamkit::regress

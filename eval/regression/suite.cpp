@@ -1,0 +1,311 @@
+#include "eval/regression/suite.h"
+
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+
+#include "core/error.h"
+#include "eval/regression/metrics.h"
+#include "io/settings_yaml.h"
+#include "io/yaml_file.h"
+
+namespace slamkit::regress {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SuiteReader {
+ public:
+  SuiteReader(const fs::path& file, const SuiteContext& context)
+      : path_(file.string()), dir_(file.parent_path()), context_(context) {}
+
+  Suite read(const YAML::Node& root) {
+    Suite suite;
+    suite.file = path_;
+    if (!root.IsMap()) fail(root, "expected a map with 'entries'");
+    check_keys(root, {"suite", "description", "settings", "tolerances", "entries"});
+    suite.name = root["suite"] ? scalar(root["suite"], "suite") : fs::path(path_).stem().string();
+    check_name(root["suite"] ? root["suite"] : root, suite.name, "suite name");
+    if (root["description"]) suite.description = scalar(root["description"], "description");
+
+    std::map<std::string, Tolerance> tolerances;
+    for (const MetricInfo& m : tracked_metrics()) tolerances[m.key] = m.tolerance;
+    if (root["tolerances"]) read_tolerances(root["tolerances"], tolerances);
+    Settings settings;
+    const bool suite_overrides = root["settings"] && apply_settings(root["settings"], settings);
+
+    const YAML::Node entries = root["entries"];
+    if (!entries) fail(root, "no 'entries' list");
+    if (!entries.IsSequence() || entries.size() == 0)
+      fail(entries, "'entries' must be a non-empty list");
+    std::set<std::string> names;
+    for (const YAML::Node& node : entries) {
+      SuiteEntry entry = read_entry(node, settings, tolerances);
+      entry.has_overrides = entry.has_overrides || suite_overrides;
+      if (!names.insert(entry.name).second)
+        fail(node["name"], "entry name '" + entry.name + "' is used twice");
+      suite.entries.push_back(std::move(entry));
+    }
+    return suite;
+  }
+
+ private:
+  SuiteEntry read_entry(const YAML::Node& node, const Settings& suite_settings,
+                        const std::map<std::string, Tolerance>& suite_tolerances) {
+    if (!node.IsMap()) fail(node, "an entry must be a map with a name and a sequence");
+    check_keys(node, {"name", "folder", "tum", "synthetic", "depth_scale", "calibration",
+                      "settings", "tolerances", "reference"});
+    SuiteEntry entry;
+    entry.line = node.Mark().line + 1;
+    if (!node["name"]) fail(node, "entry without a 'name'");
+    entry.name = scalar(node["name"], "name");
+    check_name(node["name"], entry.name, "entry name");
+    entry.sequence = read_sequence(node);
+    entry.settings = suite_settings;
+    if (node["settings"]) entry.has_overrides = apply_settings(node["settings"], entry.settings);
+    entry.tolerances = suite_tolerances;
+    if (node["tolerances"]) read_tolerances(node["tolerances"], entry.tolerances);
+    if (const YAML::Node ref = node["reference"]) {
+      if (!ref.IsMap()) fail(ref, "reference must be a map {system, ate_rmse}");
+      check_keys(ref, {"system", "ate_rmse"});
+      if (!ref["system"] || !ref["ate_rmse"]) fail(ref, "reference needs system and ate_rmse");
+      entry.reference = Reference{scalar(ref["system"], "reference.system"),
+                                  number(ref["ate_rmse"], "reference.ate_rmse")};
+    }
+    return entry;
+  }
+
+  SequenceSource read_sequence(const YAML::Node& node) {
+    const int kinds = bool(node["folder"]) + bool(node["tum"]) + bool(node["synthetic"]);
+    if (kinds != 1) fail(node, "an entry needs exactly one of folder, tum and synthetic");
+    SequenceSource s;
+    if (const YAML::Node folder = node["folder"]) {
+      s.kind = SequenceSource::Kind::kFolder;
+      fs::path path = scalar(folder, "folder");
+      if (path.is_relative()) {
+        if (!context_.data_dir)
+          fail(folder, "relative folder '" + path.string() +
+                           "' needs the data folder: set SLAMKIT_DATA or pass --data");
+        path = *context_.data_dir / path;
+      }
+      if (!fs::is_directory(path))
+        fail(folder, "sequence folder '" + path.string() + "' not found");
+      s.folder = path;
+    } else if (const YAML::Node tum = node["tum"]) {
+      s.kind = SequenceSource::Kind::kTum;
+      s.tum_name = scalar(tum, "tum");
+      const std::vector<std::string> known = context_.tum_names();
+      if (std::find(known.begin(), known.end(), s.tum_name) == known.end())
+        fail(tum, "unknown TUM RGB-D sequence '" + s.tum_name +
+                      "' (datasets/download_tum.sh --list shows the names)");
+      if (!context_.data_dir)
+        fail(tum, "TUM sequences are kept in the data folder: set SLAMKIT_DATA or pass --data");
+      s.folder = *context_.data_dir / ("rgbd_dataset_" + s.tum_name);
+      if (!context_.download && !fs::exists(s.folder / "groundtruth.txt"))
+        fail(tum, "'" + s.folder.string() + "' not found (downloads are off)");
+    } else {
+      const YAML::Node synth = node["synthetic"];
+      s.kind = SequenceSource::Kind::kSynthetic;
+      if (!synth.IsMap()) fail(synth, "synthetic must be a map {preset, frames, seed}");
+      check_keys(synth, {"preset", "frames", "seed"});
+      if (!synth["preset"] || !synth["frames"]) fail(synth, "synthetic needs preset and frames");
+      s.preset = scalar(synth["preset"], "preset");
+      const auto& presets = context_.presets;
+      if (std::find(presets.begin(), presets.end(), s.preset) == presets.end()) {
+        std::string list;
+        for (const std::string& p : presets) list += (list.empty() ? "" : ", ") + p;
+        fail(synth["preset"], "unknown synthetic preset '" + s.preset + "' (" + list + ")");
+      }
+      s.frames = integer(synth["frames"], "frames");
+      if (s.frames < 2) fail(synth["frames"], "frames must be at least 2");
+      if (synth["seed"]) s.seed = uint64_t(integer(synth["seed"], "seed"));
+    }
+    if (node["depth_scale"]) {
+      s.depth_scale = number(node["depth_scale"], "depth_scale");
+      if (*s.depth_scale <= 0) fail(node["depth_scale"], "depth_scale must be positive");
+    }
+    if (const YAML::Node calibration = node["calibration"]) {
+      s.calibration = relative_to_suite(scalar(calibration, "calibration"));
+      if (!fs::is_regular_file(s.calibration))
+        fail(calibration, "calibration file '" + s.calibration.string() + "' not found");
+    }
+    return s;
+  }
+
+  // `settings:` is a settings file (relative to the suite) or a map of inline keys; both are
+  // read by the settings reader itself, so its checks (unknown keys, types) apply unchanged.
+  bool apply_settings(const YAML::Node& node, Settings& settings) {
+    if (node.IsScalar()) {
+      const fs::path file = relative_to_suite(node.Scalar());
+      if (!fs::is_regular_file(file)) fail(node, "settings file '" + file.string() + "' not found");
+      read_settings_yaml(file, settings);
+      return true;
+    }
+    if (!node.IsMap()) fail(node, "settings must be a file name or a map of settings");
+    std::string text;
+    std::vector<int> lines;
+    emit_block(node, 0, text, lines);
+    read_inline_settings(text, lines, settings);
+    return true;
+  }
+
+  // The map as block YAML, one key a line, with the suite line of each written line.
+  static void emit_block(const YAML::Node& map, int indent, std::string& text,
+                         std::vector<int>& lines) {
+    for (const auto& kv : map) {
+      YAML::Emitter key;
+      key << kv.first;
+      text += std::string(size_t(indent), ' ') + key.c_str() + ":";
+      lines.push_back(kv.first.Mark().line + 1);
+      if (kv.second.IsMap() && kv.second.size() > 0) {
+        text += "\n";
+        emit_block(kv.second, indent + 2, text, lines);
+      } else {
+        YAML::Emitter value;
+        value << YAML::Flow << kv.second;
+        text += std::string(" ") + value.c_str() + "\n";
+      }
+    }
+  }
+
+  // Reads the inline keys through a temporary file; an error there is reported at the suite's
+  // line.
+  void read_inline_settings(const std::string& text, const std::vector<int>& lines,
+                            Settings& settings) {
+    std::string temp = (fs::temp_directory_path() / "slamkit_suite_settings_XXXXXX").string();
+    const int fd = mkstemp(temp.data());
+    if (fd < 0) throw_input_error(temp, "cannot create a temporary file");
+    close(fd);
+    std::ofstream(temp) << text;
+    try {
+      read_settings_yaml(temp, settings);
+    } catch (const InputError& e) {
+      fs::remove(temp);
+      std::string message = e.what();
+      int line = 0;
+      const std::string prefix = temp + ":";
+      if (message.rfind(prefix, 0) == 0) {
+        message = message.substr(prefix.size());
+        const size_t colon = message.find(':');
+        if (colon != std::string::npos && colon > 0 &&
+            std::all_of(message.begin(), message.begin() + long(colon), ::isdigit)) {
+          const size_t at = size_t(std::stoi(message.substr(0, colon)));
+          if (at >= 1 && at <= lines.size()) line = lines[at - 1];
+          message = message.substr(colon + 1);
+        }
+      }
+      while (!message.empty() && message[0] == ' ') message.erase(0, 1);
+      throw_input_error(path_, line, "settings: " + message);
+    }
+    fs::remove(temp);
+  }
+
+  void read_tolerances(const YAML::Node& node, std::map<std::string, Tolerance>& tolerances) {
+    if (!node.IsMap()) fail(node, "tolerances must be a map: metric: {abs: A, rel: R}");
+    for (const auto& kv : node) {
+      const std::string key = kv.first.as<std::string>();
+      if (!find_metric(key)) {
+        std::string list;
+        for (const MetricInfo& m : tracked_metrics()) list += (list.empty() ? "" : ", ") + m.key;
+        fail(kv.first, "unknown metric '" + key + "' (" + list + ")");
+      }
+      if (!kv.second.IsMap()) fail(kv.second, "tolerance of " + key + " must be {abs, rel}");
+      check_keys(kv.second, {"abs", "rel"});
+      Tolerance& t = tolerances[key];
+      if (kv.second["abs"]) t.abs = non_negative(kv.second["abs"], key + ".abs");
+      if (kv.second["rel"]) t.rel = non_negative(kv.second["rel"], key + ".rel");
+    }
+  }
+
+  void check_keys(const YAML::Node& map, std::initializer_list<const char*> allowed) const {
+    for (const auto& kv : map) {
+      const std::string key = kv.first.as<std::string>();
+      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        fail(kv.first, "unknown key '" + key + "' (expected " + list + ")");
+      }
+    }
+  }
+
+  // Names become folder and file names.
+  void check_name(const YAML::Node& at, const std::string& name, const std::string& what) const {
+    const bool ok =
+        !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+        });
+    if (!ok) fail(at, what + " '" + name + "' may hold only letters, digits, '_', '-' and '.'");
+  }
+
+  std::string scalar(const YAML::Node& node, const std::string& what) const {
+    if (!node.IsScalar() || node.Scalar().empty()) fail(node, what + " must be a non-empty value");
+    return node.Scalar();
+  }
+  double number(const YAML::Node& node, const std::string& what) const {
+    try {
+      return node.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(node, what + " must be a number");
+    }
+  }
+  double non_negative(const YAML::Node& node, const std::string& what) const {
+    const double v = number(node, what);
+    if (!(v >= 0)) fail(node, what + " must be zero or positive");
+    return v;
+  }
+  long long integer(const YAML::Node& node, const std::string& what) const {
+    try {
+      return node.as<long long>();
+    } catch (const YAML::Exception&) {
+      fail(node, what + " must be an integer");
+    }
+  }
+
+  fs::path relative_to_suite(const fs::path& path) const {
+    return path.is_relative() ? dir_ / path : path;
+  }
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
+    throw_input_error(path_, at.Mark().line + 1, message);
+  }
+
+  std::string path_;
+  fs::path dir_;
+  const SuiteContext& context_;
+};
+
+}  // namespace
+
+std::string SequenceSource::describe() const {
+  std::string text;
+  switch (kind) {
+    case Kind::kFolder:
+      text = folder.filename().string();
+      break;
+    case Kind::kTum:
+      text = "TUM " + tum_name;
+      break;
+    case Kind::kSynthetic:
+      text = "synthetic " + preset + ", " + std::to_string(frames) + " frames, seed " +
+             std::to_string(seed);
+      break;
+  }
+  if (depth_scale) {
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%g", *depth_scale);
+    text += std::string(", depth scale ") + scale;
+  }
+  if (!calibration.empty()) text += ", calibration " + calibration.filename().string();
+  return text;
+}
+
+Suite load_suite(const fs::path& file, const SuiteContext& context) {
+  const YAML::Node root = load_yaml_file(file, "suite file");
+  return SuiteReader(file, context).read(root);
+}
+
+}  // namespace slamkit::regress
