@@ -92,8 +92,8 @@ const std::vector<MetricInfo>& tracked_metrics() {
   // machines (the engine is deterministic on one machine) and below what a real loss of
   // accuracy moves: 200 instead of 1000 ORB features raises synthetic ATE by 30-200%.
   static const std::vector<MetricInfo> metrics = {
-      {"ate_rmse", "ATE RMSE", "m", false, false, {0.0005, 0.10}},
-      {"ate_median", "ATE median", "m", false, false, {0.0005, 0.10}},
+      {"ate_rmse", "ATE RMSE", "m", false, false, {0.0003, 0.10}},
+      {"ate_median", "ATE median", "m", false, false, {0.0003, 0.10}},
       {"ate_max", "ATE max", "m", false, false, {0.001, 0.20}},
       {"rpe_trans_rmse", "RPE trans RMSE", "m", false, false, {0.0005, 0.10}},
       {"rpe_rot_rmse", "RPE rot RMSE", "deg", false, false, {0.02, 0.10}},

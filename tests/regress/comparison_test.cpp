@@ -1,0 +1,48 @@
+// Tolerances: a metric may get worse by max(abs, rel * |baseline|); timing only warns.
+#include <gtest/gtest.h>
+
+#include "eval/regression/comparison.h"
+
+namespace slamkit::regress {
+namespace {
+
+TEST(Comparison, ToleranceIsTheLargerOfAbsoluteAndRelative) {
+  const MetricInfo& ate = *find_metric("ate_rmse");
+  const Tolerance t{0.001, 0.10};
+  EXPECT_EQ(compare_metric(ate, 0.0059, 0.005, t).verdict, Verdict::kPass);  // abs allows 1 mm
+  EXPECT_EQ(compare_metric(ate, 0.0061, 0.005, t).verdict, Verdict::kRegressed);
+  EXPECT_EQ(compare_metric(ate, 0.054, 0.050, t).verdict, Verdict::kPass);  // rel allows 5 mm
+  EXPECT_EQ(compare_metric(ate, 0.056, 0.050, t).verdict, Verdict::kRegressed);
+  EXPECT_EQ(compare_metric(ate, 0.044, 0.050, t).verdict, Verdict::kImproved);
+  EXPECT_DOUBLE_EQ(compare_metric(ate, 0.056, 0.050, t).allowed, 0.005);
+}
+
+TEST(Comparison, DirectionWarningsMissingAndNew) {
+  const Tolerance t{0.02, 0};
+  const MetricInfo& completeness = *find_metric("map_completeness");  // higher is better
+  EXPECT_EQ(compare_metric(completeness, 0.90, 0.95, t).verdict, Verdict::kRegressed);
+  EXPECT_EQ(compare_metric(completeness, 0.99, 0.95, t).verdict, Verdict::kImproved);
+  const MetricInfo& fps = *find_metric("frames_per_second");
+  EXPECT_EQ(compare_metric(fps, 10, 30, {0, 0.3}).verdict, Verdict::kWarning);
+  EXPECT_FALSE(is_failure(Verdict::kWarning));
+  const MetricInfo& lost = *find_metric("frames_lost");
+  EXPECT_EQ(compare_metric(lost, 1, 0, lost.tolerance).verdict, Verdict::kRegressed);
+  EXPECT_EQ(compare_metric(lost, std::nullopt, 0, lost.tolerance).verdict, Verdict::kMissing);
+  EXPECT_EQ(compare_metric(lost, 3, std::nullopt, lost.tolerance).verdict, Verdict::kNew);
+}
+
+TEST(Comparison, EveryMetricOfRunOrBaselineInReportOrder) {
+  const RunMetrics run = {{"ate_rmse", 0.002}, {"run_seconds", 3}};
+  const RunMetrics baseline = {{"ate_rmse", 0.002}, {"frames_lost", 0}};
+  const auto rows = compare_metrics(run, &baseline, {});
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].metric->key, "ate_rmse");
+  EXPECT_EQ(rows[1].metric->key, "frames_lost");
+  EXPECT_EQ(rows[1].verdict, Verdict::kMissing);
+  EXPECT_EQ(rows[2].verdict, Verdict::kNew);
+  EXPECT_EQ(format_delta(compare_metric(*find_metric("ate_rmse"), 0.0021, 0.002, {})),
+            "+0.00010 m (+5.0%)");
+}
+
+}  // namespace
+}  // namespace slamkit::regress

@@ -1,0 +1,233 @@
+// `slamkit regress` end to end on a tiny synthetic suite (40 and 50 frames): baselines written
+// and met, a worse setting caught, an interrupted suite resumed with the same report, junit.xml
+// in the JUnit shape; the shipped suites against their committed baselines.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "support/test_data.h"
+
+namespace slamkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const fs::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+
+const char* kTinySuite = R"(suite: tiny
+description: two short synthetic sequences for the tests
+entries:
+  - name: desk
+    synthetic: {preset: desk, frames: 40, seed: 3}
+  - name: jerk
+    synthetic: {preset: jerk, frames: 50}
+)";
+
+// The report without what changes from run to run: the date line and the timing rows.
+std::string stable_report(const fs::path& file) {
+  std::stringstream in(read_file(file)), out;
+  for (std::string line; std::getline(in, line);)
+    if (line.find("run time") == std::string::npos &&
+        line.find("frames/s") == std::string::npos && line.rfind("Suite `", 0) != 0)
+      out << line << "\n";
+  return out.str();
+}
+
+// Checks junit.xml with Python's XML parser: testsuites > testsuite > testcase, the counts
+// agreeing with the cases, a <failure> with a message on each failing case. Returns the number
+// of failures, or -1 when the shape is wrong (the reason printed).
+int junit_failures(const fs::path& file) {
+  const std::string script =
+      "import sys, xml.etree.ElementTree as ET\n"
+      "root = ET.parse(sys.argv[1]).getroot()\n"
+      "assert root.tag == 'testsuites', root.tag\n"
+      "suites = list(root)\n"
+      "assert suites and all(s.tag == 'testsuite' for s in suites)\n"
+      "failures = 0\n"
+      "for s in suites:\n"
+      "    cases = list(s)\n"
+      "    assert all(c.tag == 'testcase' and c.get('classname') and c.get('name') for c in cases)\n"
+      "    assert int(s.get('tests')) == len(cases)\n"
+      "    f = [c for c in cases if c.find('failure') is not None]\n"
+      "    assert int(s.get('failures')) == len(f)\n"
+      "    assert all(c.find('failure').get('message') for c in f)\n"
+      "    assert int(s.get('errors')) == len([c for c in cases if c.find('error') is not None])\n"
+      "    failures += len(f)\n"
+      "print(failures)\n";
+  const fs::path py = file.parent_path() / "check_junit.py";
+  std::ofstream(py) << script;
+  FILE* pipe = popen(("/usr/bin/python3 " + py.string() + " " + file.string() + " 2>&1").c_str(),
+                     "r");
+  char buffer[4096];
+  std::string text;
+  while (fgets(buffer, sizeof buffer, pipe)) text += buffer;
+  if (pclose(pipe) != 0) {
+    ADD_FAILURE() << "junit.xml shape: " << text;
+    return -1;
+  }
+  return std::stoi(text);
+}
+
+class RegressCli : public ::testing::Test {
+ protected:
+  // One suite folder with baselines written by a first run, shared by the tests.
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / "slamkit_tests" / "regress_cli";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "tiny.yaml") << kTinySuite;
+    std::string output;
+    baseline_code_ = test::run_slamkit(
+        "regress " + (dir_ / "tiny.yaml").string() + " --out " + (dir_ / "first").string() +
+            " --update-baselines",
+        &output);
+    std::printf("%s", output.c_str());
+  }
+  static fs::path dir_;
+  static int baseline_code_;
+};
+fs::path RegressCli::dir_;
+int RegressCli::baseline_code_ = -1;
+
+TEST_F(RegressCli, BaselinesRecordWhereTheyCameFrom) {
+  ASSERT_EQ(baseline_code_, 0);
+  const std::string baseline = read_file(dir_ / "baselines" / "tiny" / "desk.json");
+  for (const char* key : {"\"version\"", "\"settings_hash\"", "\"machine\"", "\"date\"",
+                          "\"ate_rmse\"", "\"frames_lost\"", "\"map_completeness\""})
+    EXPECT_NE(baseline.find(key), std::string::npos) << key;
+}
+
+TEST_F(RegressCli, PassesAgainstItsBaselinesReusingTheFinishedRuns) {
+  ASSERT_EQ(baseline_code_, 0);
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("regress " + (dir_ / "tiny.yaml").string() + " --out " +
+                                  (dir_ / "first").string(),
+                              &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
+  const fs::path out = dir_ / "first";
+  EXPECT_NE(read_file(out / "report.md").find("**PASS: 2 entries"), std::string::npos);
+  EXPECT_EQ(junit_failures(out / "junit.xml"), 0);
+  // Self-contained: every plot embedded, nothing fetched.
+  const std::string html = read_file(out / "report.html");
+  size_t images = 0;
+  for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos;
+       ++at)
+    ++images;
+  EXPECT_GE(images, 4u);  // error over time and trajectory of each entry (and comparison plots)
+  EXPECT_EQ(html.find("http"), std::string::npos);
+  // history.csv: a line per run, not per invocation.
+  const std::string history = read_file(dir_ / "history.csv");
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
+}
+
+TEST_F(RegressCli, FewerOrbFeaturesRegressAndTheReportSaysWhere) {
+  ASSERT_EQ(baseline_code_, 0);
+  std::string worse = kTinySuite;
+  worse.replace(worse.find("entries:"), 0, "settings: {orb: {num_features: 200}}\n");
+  std::ofstream(dir_ / "worse.yaml") << worse;
+  std::string output;
+  const fs::path out = dir_ / "worse";
+  EXPECT_EQ(test::run_slamkit("regress " + (dir_ / "worse.yaml").string() + " --out " +
+                                  out.string() + " --baselines " +
+                                  (dir_ / "baselines" / "tiny").string() + " --history " +
+                                  (out / "history.csv").string(),
+                              &output),
+            1)
+      << output;
+  const std::string report = read_file(out / "report.md");
+  EXPECT_NE(report.find("**FAIL:"), std::string::npos);
+  EXPECT_NE(report.find("| jerk | synthetic jerk, 50 frames, seed 1 | REGRESSED |"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("| ATE RMSE | "), std::string::npos);
+  EXPECT_NE(report.find("| **REGRESSED** |"), std::string::npos);
+  EXPECT_NE(output.find("REGRESSED   jerk: ATE RMSE"), std::string::npos) << output;
+  EXPECT_GT(junit_failures(out / "junit.xml"), 0);
+  EXPECT_NE(read_file(out / "report.html").find("class=\"fail\">REGRESSED"), std::string::npos);
+}
+
+TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
+  ASSERT_EQ(baseline_code_, 0);
+  const fs::path out = dir_ / "killed";
+  const std::string suite = (dir_ / "tiny.yaml").string();
+  const std::string history = (out / "history.csv").string();
+  fs::create_directories(out);
+  // In its own process group, so the kill reaches the `slamkit run` child too.
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);
+    const std::string log = (out / "first.log").string();
+    freopen(log.c_str(), "w", stdout);
+    freopen(log.c_str(), "a", stderr);
+    execl(SLAMKIT_BINARY, "slamkit", "regress", suite.c_str(), "--out", out.c_str(), "--history",
+          history.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  const fs::path first_marker = out / "runs" / "desk" / "regress_entry.json";
+  const auto start = std::chrono::steady_clock::now();
+  while (!fs::exists(first_marker) && std::chrono::steady_clock::now() - start < std::chrono::minutes(3))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(-pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(fs::exists(first_marker));
+  EXPECT_FALSE(fs::exists(out / "runs" / "jerk" / "regress_entry.json"));
+  EXPECT_FALSE(fs::exists(out / "report.md"));
+
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("regress " + suite + " --out " + out.string() + " --history " +
+                                  history,
+                              &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
+  EXPECT_NE(output.find("run         jerk"), std::string::npos) << output;
+  // The same report as an uninterrupted run (first/ after its second pass: same baselines).
+  test::run_slamkit("regress " + suite + " --out " + (dir_ / "first").string() + " --history " +
+                    (dir_ / "first" / "history.csv").string());
+  EXPECT_EQ(stable_report(out / "report.md"), stable_report(dir_ / "first" / "report.md"));
+}
+
+TEST(RegressCliInput, BadSuiteExitsTwoWithOneLineNamingFileAndLine) {
+  const fs::path dir = test::temp_dir("regress_bad");
+  std::ofstream(dir / "bad.yaml") << "entries:\n  - name: a\n    synthetic: {preset: spiral, frames: 40}\n";
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("regress " + (dir / "bad.yaml").string() + " --out " +
+                                  (dir / "out").string(),
+                              &output),
+            2);
+  EXPECT_EQ(output, "slamkit: error: " + (dir / "bad.yaml").string() +
+                        ":3: unknown synthetic preset 'spiral' (desk, loop, lowtexture, jerk)\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// CI runs this one with SLAMKIT_DATA: the real pieces against their committed baselines.
+TEST(RegressCliSuites, TumPiecesPass) {
+  SLAMKIT_REQUIRE_DATA(data, "rgbd_dataset_freiburg2_desk_first50");
+  const fs::path out = test::temp_dir("regress_tum_pieces");
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("regress " + std::string(SLAMKIT_SOURCE_DIR) +
+                                  "/results/tum-pieces.yaml --data " + data.parent_path().string() +
+                                  " --out " + out.string() + " --history " +
+                                  (out / "history.csv").string(),
+                              &output),
+            0)
+      << output;
+}
+
+}  // namespace
+}  // namespace slamkit
