@@ -1,7 +1,7 @@
 // Tolerances: a metric may get worse by max(abs, rel * |baseline|); timing only warns.
-#include <gtest/gtest.h>
-
 #include "eval/regression/comparison.h"
+
+#include <gtest/gtest.h>
 
 namespace slamkit::regress {
 namespace {

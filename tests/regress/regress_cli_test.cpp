@@ -37,8 +37,8 @@ entries:
 std::string stable_report(const fs::path& file) {
   std::stringstream in(read_file(file)), out;
   for (std::string line; std::getline(in, line);)
-    if (line.find("run time") == std::string::npos &&
-        line.find("frames/s") == std::string::npos && line.rfind("Suite `", 0) != 0)
+    if (line.find("run time") == std::string::npos && line.find("frames/s") == std::string::npos &&
+        line.rfind("Suite `", 0) != 0)
       out << line << "\n";
   return out.str();
 }
@@ -56,7 +56,8 @@ int junit_failures(const fs::path& file) {
       "failures = 0\n"
       "for s in suites:\n"
       "    cases = list(s)\n"
-      "    assert all(c.tag == 'testcase' and c.get('classname') and c.get('name') for c in cases)\n"
+      "    assert all(c.tag == 'testcase' and c.get('classname') and c.get('name') for c in "
+      "cases)\n"
       "    assert int(s.get('tests')) == len(cases)\n"
       "    f = [c for c in cases if c.find('failure') is not None]\n"
       "    assert int(s.get('failures')) == len(f)\n"
@@ -66,8 +67,8 @@ int junit_failures(const fs::path& file) {
       "print(failures)\n";
   const fs::path py = file.parent_path() / "check_junit.py";
   std::ofstream(py) << script;
-  FILE* pipe = popen(("/usr/bin/python3 " + py.string() + " " + file.string() + " 2>&1").c_str(),
-                     "r");
+  FILE* pipe =
+      popen(("/usr/bin/python3 " + py.string() + " " + file.string() + " 2>&1").c_str(), "r");
   char buffer[4096];
   std::string text;
   while (fgets(buffer, sizeof buffer, pipe)) text += buffer;
@@ -87,10 +88,9 @@ class RegressCli : public ::testing::Test {
     fs::create_directories(dir_);
     std::ofstream(dir_ / "tiny.yaml") << kTinySuite;
     std::string output;
-    baseline_code_ = test::run_slamkit(
-        "regress " + (dir_ / "tiny.yaml").string() + " --out " + (dir_ / "first").string() +
-            " --update-baselines",
-        &output);
+    baseline_code_ = test::run_slamkit("regress " + (dir_ / "tiny.yaml").string() + " --out " +
+                                           (dir_ / "first").string() + " --update-baselines",
+                                       &output);
     std::printf("%s", output.c_str());
   }
   static fs::path dir_;
@@ -110,9 +110,9 @@ TEST_F(RegressCli, BaselinesRecordWhereTheyCameFrom) {
 TEST_F(RegressCli, PassesAgainstItsBaselinesReusingTheFinishedRuns) {
   ASSERT_EQ(baseline_code_, 0);
   std::string output;
-  EXPECT_EQ(test::run_slamkit("regress " + (dir_ / "tiny.yaml").string() + " --out " +
-                                  (dir_ / "first").string(),
-                              &output),
+  EXPECT_EQ(test::run_slamkit(
+                "regress " + (dir_ / "tiny.yaml").string() + " --out " + (dir_ / "first").string(),
+                &output),
             0)
       << output;
   EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
@@ -139,12 +139,12 @@ TEST_F(RegressCli, FewerOrbFeaturesRegressAndTheReportSaysWhere) {
   std::ofstream(dir_ / "worse.yaml") << worse;
   std::string output;
   const fs::path out = dir_ / "worse";
-  EXPECT_EQ(test::run_slamkit("regress " + (dir_ / "worse.yaml").string() + " --out " +
-                                  out.string() + " --baselines " +
-                                  (dir_ / "baselines" / "tiny").string() + " --history " +
-                                  (out / "history.csv").string(),
-                              &output),
-            1)
+  EXPECT_EQ(
+      test::run_slamkit("regress " + (dir_ / "worse.yaml").string() + " --out " + out.string() +
+                            " --baselines " + (dir_ / "baselines" / "tiny").string() +
+                            " --history " + (out / "history.csv").string(),
+                        &output),
+      1)
       << output;
   const std::string report = read_file(out / "report.md");
   EXPECT_NE(report.find("**FAIL:"), std::string::npos);
@@ -179,7 +179,8 @@ TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
   setpgid(pid, pid);
   const fs::path first_marker = out / "runs" / "desk" / "regress_entry.json";
   const auto start = std::chrono::steady_clock::now();
-  while (!fs::exists(first_marker) && std::chrono::steady_clock::now() - start < std::chrono::minutes(3))
+  while (!fs::exists(first_marker) &&
+         std::chrono::steady_clock::now() - start < std::chrono::minutes(3))
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   kill(-pid, SIGKILL);
   int status = 0;
@@ -189,9 +190,8 @@ TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
   EXPECT_FALSE(fs::exists(out / "report.md"));
 
   std::string output;
-  EXPECT_EQ(test::run_slamkit("regress " + suite + " --out " + out.string() + " --history " +
-                                  history,
-                              &output),
+  EXPECT_EQ(test::run_slamkit(
+                "regress " + suite + " --out " + out.string() + " --history " + history, &output),
             0)
       << output;
   EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
@@ -204,15 +204,28 @@ TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
 
 TEST(RegressCliInput, BadSuiteExitsTwoWithOneLineNamingFileAndLine) {
   const fs::path dir = test::temp_dir("regress_bad");
-  std::ofstream(dir / "bad.yaml") << "entries:\n  - name: a\n    synthetic: {preset: spiral, frames: 40}\n";
+  std::ofstream(dir / "bad.yaml")
+      << "entries:\n  - name: a\n    synthetic: {preset: spiral, frames: 40}\n";
   std::string output;
-  EXPECT_EQ(test::run_slamkit("regress " + (dir / "bad.yaml").string() + " --out " +
-                                  (dir / "out").string(),
-                              &output),
-            2);
+  EXPECT_EQ(
+      test::run_slamkit(
+          "regress " + (dir / "bad.yaml").string() + " --out " + (dir / "out").string(), &output),
+      2);
   EXPECT_EQ(output, "slamkit: error: " + (dir / "bad.yaml").string() +
                         ":3: unknown synthetic preset 'spiral' (desk, loop, lowtexture, jerk)\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// The shipped synthetic suite against its committed baselines (about 100 s of CPU).
+TEST(RegressCliSuites, SyntheticPasses) {
+  const fs::path out = test::temp_dir("regress_synthetic");
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("regress " + std::string(SLAMKIT_SOURCE_DIR) +
+                                  "/results/synthetic.yaml --jobs 2 --out " + out.string() +
+                                  " --history " + (out / "history.csv").string(),
+                              &output),
+            0)
+      << output;
 }
 
 // CI runs this one with SLAMKIT_DATA: the real pieces against their committed baselines.

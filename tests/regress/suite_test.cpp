@@ -1,10 +1,11 @@
 // Suite files: what they hold once read, and errors that name the suite file and line.
+#include "eval/regression/suite.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "core/error.h"
-#include "eval/regression/suite.h"
 #include "support/test_data.h"
 
 namespace slamkit::regress {
@@ -80,19 +81,21 @@ TEST(Suite, ErrorsNameTheFileAndLine) {
   const std::string file = (f.dir / "suite.yaml").string();
   const std::string head = "entries:\n  - name: a\n";
   EXPECT_EQ(f.error(head + "    folder: seq_a\n    colour: red\n"),
-            file + ":4: unknown key 'colour' (expected name, folder, tum, synthetic, "
-                   "depth_scale, calibration, settings, tolerances, reference)");
+            file +
+                ":4: unknown key 'colour' (expected name, folder, tum, synthetic, "
+                "depth_scale, calibration, settings, tolerances, reference)");
   EXPECT_EQ(f.error(head + "    folder: nowhere\n"),
-            file + ":3: sequence folder '" + (f.dir / "data" / "nowhere").string() +
-                "' not found");
+            file + ":3: sequence folder '" + (f.dir / "data" / "nowhere").string() + "' not found");
   EXPECT_EQ(f.error(head + "    tum: freiburg1_dsek\n"),
-            file + ":3: unknown TUM RGB-D sequence 'freiburg1_dsek' "
-                   "(datasets/download_tum.sh --list shows the names)");
+            file +
+                ":3: unknown TUM RGB-D sequence 'freiburg1_dsek' "
+                "(datasets/download_tum.sh --list shows the names)");
   EXPECT_EQ(f.error(head + "    synthetic: {preset: jerk, frames: 40}\n"),
             file + ":3: unknown synthetic preset 'jerk' (desk, loop)");
   // Inline settings are checked by the settings reader, at the suite's line.
-  EXPECT_EQ(f.error(head + "    folder: seq_a\n    settings:\n      orb:\n        num_featurs: 5\n"),
-            file + ":6: settings: unknown setting 'orb.num_featurs'");
+  EXPECT_EQ(
+      f.error(head + "    folder: seq_a\n    settings:\n      orb:\n        num_featurs: 5\n"),
+      file + ":6: settings: unknown setting 'orb.num_featurs'");
   EXPECT_NE(f.error(head + "    folder: seq_a\n    tolerances: {ate_rsme: {abs: 1}}\n")
                 .find(file + ":4: unknown metric 'ate_rsme'"),
             std::string::npos);
@@ -102,8 +105,9 @@ TEST(Suite, ErrorsNameTheFileAndLine) {
             file + ":2: an entry needs exactly one of folder, tum and synthetic");
   f.context.data_dir.reset();
   EXPECT_EQ(f.error(head + "    folder: seq_a\n"),
-            file + ":3: relative folder 'seq_a' needs the data folder: set SLAMKIT_DATA or "
-                   "pass --data");
+            file +
+                ":3: relative folder 'seq_a' needs the data folder: set SLAMKIT_DATA or "
+                "pass --data");
 }
 
 }  // namespace
