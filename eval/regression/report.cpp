@@ -116,8 +116,8 @@ std::string baseline_origin(const EntryResult& e) {
   return text + ".";
 }
 
-std::string run_line(const EntryResult& e) {
-  return e.entry->sequence.describe() + "; run folder `runs/" + e.entry->name + "`";
+std::string run_line(const EntryResult& e, const std::string& quote) {
+  return e.entry->sequence.describe() + "; run folder " + quote + "runs/" + e.entry->name + quote;
 }
 
 struct Counts {
@@ -187,7 +187,7 @@ void write_report_markdown(const fs::path& file, const SuiteReport& r) {
   }
   for (const EntryResult& e : r.entries) {
     out << "\n## " << e.entry->name << ": " << entry_verdict(e) << "\n\n"
-        << escape_markdown(run_line(e)) << ".\n\n";
+        << escape_markdown(run_line(e, "`")) << ".\n\n";
     if (!e.run.ok) {
       out << "The run failed: " << e.run.error << "\n";
       continue;
@@ -232,7 +232,7 @@ void write_report_html(const fs::path& file, const SuiteReport& r) {
       << ".pass{background:#d8f0d8}.fail{background:#f7c6c6;font-weight:bold}"
       << ".improved{background:#cfe3fa}.warn{background:#fbe7b5}.none{background:#e6e6e6}\n"
       << ".banner{padding:8px 12px;font-size:18px;display:inline-block}\n"
-      << "img{max-width:640px;margin:4px;border:1px solid #ddd;vertical-align:top}\n"
+      << "img{max-width:600px;margin:4px;border:1px solid #ddd;vertical-align:top}\n"
       << ".meta{color:#555;font-size:13px}\n</style></head><body>\n";
   out << "<h1>Regression report: " << escape_xml(r.suite->name) << "</h1>\n";
   if (!r.suite->description.empty()) out << "<p>" << escape_xml(r.suite->description) << "</p>\n";
@@ -259,7 +259,7 @@ void write_report_html(const fs::path& file, const SuiteReport& r) {
     const std::string verdict = entry_verdict(e);
     out << "<h2 id=\"" << e.entry->name << "\">" << e.entry->name << ": <span class=\""
         << css_class(verdict) << "\">" << verdict << "</span></h2>\n<p class=\"meta\">"
-        << escape_xml(run_line(e)) << ".</p>\n";
+        << escape_xml(run_line(e, "")) << ".</p>\n";
     if (!e.run.ok) {
       out << "<p class=\"fail\">The run failed: " << escape_xml(e.run.error) << "</p>\n";
       continue;

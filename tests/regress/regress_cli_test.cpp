@@ -79,99 +79,23 @@ int junit_failures(const fs::path& file) {
   return std::stoi(text);
 }
 
-class RegressCli : public ::testing::Test {
- protected:
-  // One suite folder with baselines written by a first run, shared by the tests.
-  static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / "slamkit_tests" / "regress_cli";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    std::ofstream(dir_ / "tiny.yaml") << kTinySuite;
-    std::string output;
-    baseline_code_ = test::run_slamkit("regress " + (dir_ / "tiny.yaml").string() + " --out " +
-                                           (dir_ / "first").string() + " --update-baselines",
-                                       &output);
-    std::printf("%s", output.c_str());
-  }
-  static fs::path dir_;
-  static int baseline_code_;
-};
-fs::path RegressCli::dir_;
-int RegressCli::baseline_code_ = -1;
-
-TEST_F(RegressCli, BaselinesRecordWhereTheyCameFrom) {
-  ASSERT_EQ(baseline_code_, 0);
-  const std::string baseline = read_file(dir_ / "baselines" / "tiny" / "desk.json");
-  for (const char* key : {"\"version\"", "\"settings_hash\"", "\"machine\"", "\"date\"",
-                          "\"ate_rmse\"", "\"frames_lost\"", "\"map_completeness\""})
-    EXPECT_NE(baseline.find(key), std::string::npos) << key;
+int run_regress(const std::string& arguments, std::string* output) {
+  const int code = test::run_slamkit("regress " + arguments, output);
+  std::printf("slamkit regress %s\n%s", arguments.c_str(), output->c_str());
+  return code;
 }
 
-TEST_F(RegressCli, PassesAgainstItsBaselinesReusingTheFinishedRuns) {
-  ASSERT_EQ(baseline_code_, 0);
-  std::string output;
-  EXPECT_EQ(test::run_slamkit(
-                "regress " + (dir_ / "tiny.yaml").string() + " --out " + (dir_ / "first").string(),
-                &output),
-            0)
-      << output;
-  EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
-  const fs::path out = dir_ / "first";
-  EXPECT_NE(read_file(out / "report.md").find("**PASS: 2 entries"), std::string::npos);
-  EXPECT_EQ(junit_failures(out / "junit.xml"), 0);
-  // Self-contained: every plot embedded, nothing fetched.
-  const std::string html = read_file(out / "report.html");
-  size_t images = 0;
-  for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos;
-       ++at)
-    ++images;
-  EXPECT_GE(images, 4u);  // error over time and trajectory of each entry (and comparison plots)
-  EXPECT_EQ(html.find("http"), std::string::npos);
-  // history.csv: a line per run, not per invocation.
-  const std::string history = read_file(dir_ / "history.csv");
-  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
-}
-
-TEST_F(RegressCli, FewerOrbFeaturesRegressAndTheReportSaysWhere) {
-  ASSERT_EQ(baseline_code_, 0);
-  std::string worse = kTinySuite;
-  worse.replace(worse.find("entries:"), 0, "settings: {orb: {num_features: 200}}\n");
-  std::ofstream(dir_ / "worse.yaml") << worse;
-  std::string output;
-  const fs::path out = dir_ / "worse";
-  EXPECT_EQ(
-      test::run_slamkit("regress " + (dir_ / "worse.yaml").string() + " --out " + out.string() +
-                            " --baselines " + (dir_ / "baselines" / "tiny").string() +
-                            " --history " + (out / "history.csv").string(),
-                        &output),
-      1)
-      << output;
-  const std::string report = read_file(out / "report.md");
-  EXPECT_NE(report.find("**FAIL:"), std::string::npos);
-  EXPECT_NE(report.find("| jerk | synthetic jerk, 50 frames, seed 1 | REGRESSED |"),
-            std::string::npos)
-      << report;
-  EXPECT_NE(report.find("| ATE RMSE | "), std::string::npos);
-  EXPECT_NE(report.find("| **REGRESSED** |"), std::string::npos);
-  EXPECT_NE(output.find("REGRESSED   jerk: ATE RMSE"), std::string::npos) << output;
-  EXPECT_GT(junit_failures(out / "junit.xml"), 0);
-  EXPECT_NE(read_file(out / "report.html").find("class=\"fail\">REGRESSED"), std::string::npos);
-}
-
-TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
-  ASSERT_EQ(baseline_code_, 0);
-  const fs::path out = dir_ / "killed";
-  const std::string suite = (dir_ / "tiny.yaml").string();
-  const std::string history = (out / "history.csv").string();
+// Runs `slamkit regress SUITE --out OUT --history OUT/history.csv`, killing it and its `slamkit
+// run` child as soon as the first entry's run folder is finished.
+void run_and_kill_after_first_entry(const fs::path& suite, const fs::path& out) {
   fs::create_directories(out);
-  // In its own process group, so the kill reaches the `slamkit run` child too.
+  const std::string history = (out / "history.csv").string();
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
-    setpgid(0, 0);
-    const std::string log = (out / "first.log").string();
-    freopen(log.c_str(), "w", stdout);
-    freopen(log.c_str(), "a", stderr);
+    setpgid(0, 0);  // its own process group, so the kill reaches the child runs too
+    const std::string log = (out / "killed.log").string();
+    if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr)) _exit(126);
     execl(SLAMKIT_BINARY, "slamkit", "regress", suite.c_str(), "--out", out.c_str(), "--history",
           history.c_str(), static_cast<char*>(nullptr));
     _exit(127);
@@ -185,21 +109,81 @@ TEST_F(RegressCli, KilledMidwayResumesAndGivesTheSameReport) {
   kill(-pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  ASSERT_TRUE(fs::exists(first_marker));
-  EXPECT_FALSE(fs::exists(out / "runs" / "jerk" / "regress_entry.json"));
-  EXPECT_FALSE(fs::exists(out / "report.md"));
+}
 
+// One test (ctest runs tests as separate processes, two at a time): the baseline run is
+// shared by every step.
+TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
+  const fs::path dir = test::temp_dir("regress_cli");
+  const fs::path suite = dir / "tiny.yaml";
+  std::ofstream(suite) << kTinySuite;
+  const std::string baselines = (dir / "baselines" / "tiny").string();
   std::string output;
-  EXPECT_EQ(test::run_slamkit(
-                "regress " + suite + " --out " + out.string() + " --history " + history, &output),
-            0)
-      << output;
-  EXPECT_NE(output.find("reuse       desk"), std::string::npos) << output;
-  EXPECT_NE(output.find("run         jerk"), std::string::npos) << output;
-  // The same report as an uninterrupted run (first/ after its second pass: same baselines).
-  test::run_slamkit("regress " + suite + " --out " + (dir_ / "first").string() + " --history " +
-                    (dir_ / "first" / "history.csv").string());
-  EXPECT_EQ(stable_report(out / "report.md"), stable_report(dir_ / "first" / "report.md"));
+
+  // Baselines, with where they came from.
+  ASSERT_EQ(
+      run_regress(suite.string() + " --out " + (dir / "first").string() + " --update-baselines",
+                  &output),
+      0);
+  const std::string baseline = read_file(dir / "baselines" / "tiny" / "desk.json");
+  for (const char* key : {"\"version\"", "\"settings_hash\"", "\"machine\"", "\"date\"",
+                          "\"ate_rmse\"", "\"frames_lost\"", "\"map_completeness\""})
+    EXPECT_NE(baseline.find(key), std::string::npos) << key;
+
+  {
+    SCOPED_TRACE("the same suite again passes, reusing the finished runs");
+    const fs::path out = dir / "first";
+    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string(), &output), 0);
+    EXPECT_NE(output.find("reuse       desk"), std::string::npos);
+    EXPECT_NE(read_file(out / "report.md").find("**PASS: 2 entries"), std::string::npos);
+    EXPECT_EQ(junit_failures(out / "junit.xml"), 0);
+    // Self-contained: every plot embedded, nothing fetched.
+    const std::string html = read_file(out / "report.html");
+    size_t images = 0;
+    for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos;
+         ++at)
+      ++images;
+    EXPECT_GE(images, 5u);  // error over time and trajectory per entry, the box plot, history
+    EXPECT_EQ(html.find("http"), std::string::npos);
+    // history.csv: a line per run, not per invocation.
+    const std::string history = read_file(dir / "history.csv");
+    EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
+  }
+  {
+    SCOPED_TRACE("200 ORB features instead of 1000 regress, and the report says where");
+    std::string worse = kTinySuite;
+    worse.replace(worse.find("entries:"), 0, "settings: {orb: {num_features: 200}}\n");
+    std::ofstream(dir / "worse.yaml") << worse;
+    const fs::path out = dir / "worse";
+    EXPECT_EQ(
+        run_regress((dir / "worse.yaml").string() + " --out " + out.string() + " --baselines " +
+                        baselines + " --history " + (out / "history.csv").string(),
+                    &output),
+        1);
+    EXPECT_NE(output.find("REGRESSED   jerk: ATE RMSE"), std::string::npos);
+    const std::string report = read_file(out / "report.md");
+    EXPECT_NE(report.find("**FAIL:"), std::string::npos);
+    EXPECT_NE(report.find("| jerk | synthetic jerk, 50 frames, seed 1 | REGRESSED |"),
+              std::string::npos);
+    EXPECT_NE(report.find("| **REGRESSED** |"), std::string::npos);
+    EXPECT_GT(junit_failures(out / "junit.xml"), 0);
+    EXPECT_NE(read_file(out / "report.html").find("class=\"fail\">REGRESSED"), std::string::npos);
+  }
+  {
+    SCOPED_TRACE("killed after its first entry, the suite resumes with the same report");
+    const fs::path out = dir / "killed";
+    run_and_kill_after_first_entry(suite, out);
+    ASSERT_TRUE(fs::exists(out / "runs" / "desk" / "regress_entry.json"));
+    EXPECT_FALSE(fs::exists(out / "runs" / "jerk" / "regress_entry.json"));
+    EXPECT_FALSE(fs::exists(out / "report.md"));
+    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string() + " --history " +
+                              (out / "history.csv").string(),
+                          &output),
+              0);
+    EXPECT_NE(output.find("reuse       desk"), std::string::npos);
+    EXPECT_NE(output.find("run         jerk"), std::string::npos);
+    EXPECT_EQ(stable_report(out / "report.md"), stable_report(dir / "first" / "report.md"));
+  }
 }
 
 TEST(RegressCliInput, BadSuiteExitsTwoWithOneLineNamingFileAndLine) {
