@@ -52,18 +52,20 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
                 result.global_ba.points, result.global_ba.report.iterations,
                 result.global_ba.removed_observations, t.global_ba);
   if (result.fusion.frames > 0)
-    std::printf("fused map   %zu frames: %zu points raw, %zu after the %.0f mm voxel grid, %zu after "
-                "outlier removal, %.2f s\n",
-                result.fusion.frames, result.fusion.raw_points, result.fusion.after_voxel_grid,
-                settings.fusion.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
+    std::printf(
+        "fused map   %zu frames: %zu points raw, %zu after the %.0f mm voxel grid, %zu after "
+        "outlier removal, %.2f s\n",
+        result.fusion.frames, result.fusion.raw_points, result.fusion.after_voxel_grid,
+        settings.fusion.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
   if (seq.groundtruth() && settings.pipeline.evaluate)
     std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after local and global BA\n",
                 1000 * ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),
                 1000 * ate_rmse(*seq.groundtruth(), result.trajectory()));
-  std::printf("stages      prepare %.2f s (parallel, beside tracking), track %.2f s (local BA "
-              "%.2f), global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f frames/s\n",
-              t.prepare, t.track, t.local_ba, t.global_ba, t.fusion, t.write, t.total,
-              double(result.frames.size()) / t.total);
+  std::printf(
+      "stages      prepare %.2f s (parallel, beside tracking), track %.2f s (local BA "
+      "%.2f), global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f frames/s\n",
+      t.prepare, t.track, t.local_ba, t.global_ba, t.fusion, t.write, t.total,
+      double(result.frames.size()) / t.total);
 }
 
 // On a synthetic sequence, the map's accuracy and completeness go into metrics.json.
@@ -91,8 +93,8 @@ void run(const RunArgs& args) {
   RunResult result;
   {
     StageProgress progress;
-    result = run_batch(seq, settings, args.out, seq.folder().filename().string(),
-                       std::ref(progress));
+    result =
+        run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress));
   }
   print_tracking_summary(seq, result);
   print_back_end_summary(seq, settings, result);

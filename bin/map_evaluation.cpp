@@ -45,8 +45,8 @@ std::optional<synth::MapQuality> evaluate_map(
     throw_input_error((sequence_folder / "groundtruth.txt").string(), "not found");
   std::vector<Eigen::Vector3f> points = read_ply_points(map);
   if (trajectory) align_into_groundtruth(points, *sequence.groundtruth(), *trajectory);
-  return synth::evaluate_map_quality(points, synth::make_scene(*info),
-                                     groundtruth_poses(sequence), sequence.camera(), settings);
+  return synth::evaluate_map_quality(points, synth::make_scene(*info), groundtruth_poses(sequence),
+                                     sequence.camera(), settings);
 }
 
 void print_map_quality(const synth::MapQuality& q) {

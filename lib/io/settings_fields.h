@@ -155,6 +155,7 @@ void visit_fields(GlobalBaSettings& s, V& v) {
 
 template <class V>
 void visit_fields(OptimizationSettings& s, V& v) {
+  v.field("min_keyframe_points", s.min_keyframe_points);
   v.section("residual", s.residual);
   v.section("local_ba", s.local);
   v.section("global_ba", s.global);

@@ -54,7 +54,9 @@ class Map {
   int predict_octave(const MapPoint& point, double distance) const;
 
   void set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c);
-  void set_point_position(int point, const Eigen::Vector3d& p_w) { points_[size_t(point)].p_w = p_w; }
+  void set_point_position(int point, const Eigen::Vector3d& p_w) {
+    points_[size_t(point)].p_w = p_w;
+  }
   void count_visible(int point) { ++points_[size_t(point)].visible; }
   void count_found(int point) { ++points_[size_t(point)].found; }
 

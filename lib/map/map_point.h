@@ -15,10 +15,10 @@ struct Observation {
 struct MapPoint {
   Eigen::Vector3d p_w = Eigen::Vector3d::Zero();  // world position, metres
   // The observation descriptor with the least median Hamming distance to the others.
-  cv::Mat descriptor;                       // 1 x 32 CV_8U
-  std::vector<Observation> observations;    // one per keyframe, in insertion order
-  int reference_keyframe = -1;              // the keyframe that created it
-  int octave = 0;                           // of its keypoint in the reference keyframe
+  cv::Mat descriptor;                     // 1 x 32 CV_8U
+  std::vector<Observation> observations;  // one per keyframe, in insertion order
+  int reference_keyframe = -1;            // the keyframe that created it
+  int octave = 0;                         // of its keypoint in the reference keyframe
   // Mean unit direction from the observing cameras to the point, and the distance range
   // within which the pyramid can detect it (ORB-SLAM2's UpdateNormalAndDepth).
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();

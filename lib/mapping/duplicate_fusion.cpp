@@ -8,8 +8,8 @@
 
 namespace slamkit {
 
-int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points,
-                       const Camera& camera, const FusionGates& gates) {
+int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points, const Camera& camera,
+                       const FusionGates& gates) {
   const Keyframe& k = map.keyframe(keyframe);
   const KeypointGrid grid(k.undistorted);
   const Eigen::Vector3d centre = k.centre();

@@ -19,7 +19,7 @@ struct FusionGates {
 };
 
 // Projects `points` into `keyframe` and fuses them; returns how many were merged or linked.
-int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points,
-                       const Camera& camera, const FusionGates& gates);
+int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points, const Camera& camera,
+                       const FusionGates& gates);
 
 }  // namespace slamkit

@@ -8,8 +8,7 @@
 
 namespace slamkit {
 
-LocalMapper::LocalMapper(const Camera& camera, const Settings& settings, Map& map,
-                         bool concurrent)
+LocalMapper::LocalMapper(const Camera& camera, const Settings& settings, Map& map, bool concurrent)
     : camera_(camera),
       settings_(settings),
       map_(map),
@@ -111,7 +110,8 @@ int LocalMapper::fuse_duplicates(int keyframe) {
   };
   int fused = 0;
   // The new keyframe's points into each neighbour, then the neighbours' points into it.
-  for (int target : targets) fused += fuse_into_keyframe(map_, target, points_of(keyframe), camera_, gates);
+  for (int target : targets)
+    fused += fuse_into_keyframe(map_, target, points_of(keyframe), camera_, gates);
   std::set<int> theirs;
   for (int target : targets)
     for (int id : points_of(target)) theirs.insert(id);

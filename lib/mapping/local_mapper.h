@@ -20,9 +20,9 @@ struct MappingReport {
   int new_points = 0;
   int culled_points = 0;
   int fused_points = 0;
-  bool ba_run = false;  // false: disabled, too few keyframes, or the camera was quasi-static
-  MapAdjustment ba;     // when ba_run
-  double ms = 0;        // the insertion on the tracking thread, waiting for the last BA included
+  bool ba_run = false;    // false: disabled, too few keyframes, or the camera was quasi-static
+  MapAdjustment ba;       // when ba_run
+  double ms = 0;          // the insertion on the tracking thread, waiting for the last BA included
   double ba_wait_ms = 0;  // of which waiting for the previous keyframe's BA to finish
 };
 

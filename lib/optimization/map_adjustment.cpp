@@ -6,6 +6,21 @@
 namespace slamkit {
 namespace {
 
+int good_point_count(const Map& map, int keyframe) {
+  int count = 0;
+  for (int id : map.keyframe(keyframe).point_ids) count += id >= 0 && !map.point(id).bad;
+  return count;
+}
+
+// The keyframes that may move: enough points to fix a pose.
+std::vector<int> constrained(const Map& map, const std::vector<int>& keyframes,
+                             const OptimizationSettings& settings) {
+  std::vector<int> kept;
+  for (int k : keyframes)
+    if (good_point_count(map, k) >= settings.min_keyframe_points) kept.push_back(k);
+  return kept;
+}
+
 std::vector<int> good_points_of(const Map& map, const std::vector<int>& keyframes) {
   std::vector<int> ids;
   for (int k : keyframes)
@@ -23,18 +38,18 @@ MapBaJob MapBaJob::local_window(const Map& map, int keyframe, const Camera& came
   std::vector<int> window = {keyframe};
   for (int k : map.best_covisible(keyframe, settings.local.max_covisible_keyframes))
     window.push_back(k);
-  return MapBaJob(map, window, camera, settings, true);
+  return MapBaJob(map, constrained(map, window, settings), camera, settings, true);
 }
 
 MapBaJob MapBaJob::whole_map(const Map& map, const Camera& camera,
                              const OptimizationSettings& settings) {
   std::vector<int> all(map.keyframes().size());
   for (size_t k = 0; k < all.size(); ++k) all[k] = int(k);
-  return MapBaJob(map, all, camera, settings, false);
+  return MapBaJob(map, constrained(map, all, settings), camera, settings, false);
 }
 
-// Every observation of the free keyframes' points; keyframes observing one of them but not
-// free are added as fixed (local BA's rule).
+// Every observation of the free keyframes' points. Local BA adds the other keyframes observing
+// them as fixed; global BA leaves them out.
 MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const Camera& camera,
                    const OptimizationSettings& settings, bool local)
     : intrinsics_{camera.fx, camera.fy, camera.cx, camera.cy}, settings_(settings), local_(local) {
@@ -55,6 +70,7 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
     points_.push_back(id);
     problem_.p_w.push_back(p.p_w);
     for (const Observation& o : p.observations) {
+      if (!local && !pose_of.count(o.keyframe)) continue;
       const Keyframe& k = map.keyframe(o.keyframe);
       BaObservation b;
       b.pose = add_pose(o.keyframe, true);
@@ -69,10 +85,10 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
 }
 
 void MapBaJob::solve() {
-  report_ = local_ ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual,
-                                             settings_.local)
-                   : global_bundle_adjustment(problem_, intrinsics_, settings_.residual,
-                                              settings_.global);
+  report_ =
+      local_
+          ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.local)
+          : global_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.global);
 }
 
 MapAdjustment MapBaJob::apply(Map& map) const {
@@ -82,6 +98,8 @@ MapAdjustment MapBaJob::apply(Map& map) const {
   result.observations = int(problem_.observations.size());
   for (bool fixed : problem_.pose_fixed) (fixed ? result.fixed_keyframes : result.free_keyframes)++;
   if (!report_.solved) return result;
+  std::vector<Eigen::Isometry3d> T_w_c_before;
+  for (const Keyframe& k : map.keyframes()) T_w_c_before.push_back(k.T_w_c);
   for (size_t i = 0; i < keyframes_.size(); ++i)
     if (!problem_.pose_fixed[i]) map.set_keyframe_pose(keyframes_[i], problem_.T_c_w[i].inverse());
   for (size_t i = 0; i < points_.size(); ++i) map.set_point_position(points_[i], problem_.p_w[i]);
@@ -90,9 +108,31 @@ MapAdjustment MapBaJob::apply(Map& map) const {
       map.erase_observation(links_[i].point, links_[i].keyframe);
       ++result.removed_observations;
     }
+  if (!local_) carry_along(map, T_w_c_before);
   for (int id : points_)
     if (!map.point(id).bad) map.update_point_geometry(id);
   return result;
+}
+
+void MapBaJob::carry_along(Map& map, const std::vector<Eigen::Isometry3d>& T_w_c_before) const {
+  std::vector<bool> adjusted(map.keyframes().size(), false);
+  for (int k : keyframes_) adjusted[size_t(k)] = true;
+  // A parent is older than its children, so walking by index corrects parents first.
+  for (size_t k = 0; k < adjusted.size(); ++k) {
+    const int parent = map.keyframe(int(k)).parent;
+    if (adjusted[k] || parent < 0) continue;
+    map.set_keyframe_pose(int(k), map.keyframe(parent).T_w_c *
+                                      T_w_c_before[size_t(parent)].inverse() * T_w_c_before[k]);
+  }
+  std::vector<bool> in_problem(map.points().size(), false);
+  for (int id : points_) in_problem[size_t(id)] = true;
+  for (size_t id = 0; id < in_problem.size(); ++id) {
+    const MapPoint& p = map.point(int(id));
+    if (in_problem[id] || p.bad) continue;
+    const int r = p.reference_keyframe;
+    map.set_point_position(int(id),
+                           map.keyframe(r).T_w_c * (T_w_c_before[size_t(r)].inverse() * p.p_w));
+  }
 }
 
 MapAdjustment adjust_local_window(Map& map, int keyframe, const Camera& camera,

@@ -27,7 +27,9 @@ class MapBaJob {
   // fixed.
   static MapBaJob local_window(const Map& map, int keyframe, const Camera& camera,
                                const OptimizationSettings& settings);
-  // Global BA: every keyframe and point, keyframe 0 fixed.
+  // Global BA: every keyframe and point, keyframe 0 fixed. Keyframes with fewer than
+  // settings.min_keyframe_points points stay out and follow their spanning-tree parent's
+  // correction; so do the points only they observe, with their reference keyframe.
   static MapBaJob whole_map(const Map& map, const Camera& camera,
                             const OptimizationSettings& settings);
 
@@ -40,6 +42,8 @@ class MapBaJob {
   };
   MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const Camera& camera,
            const OptimizationSettings& settings, bool local);
+  // Global BA's write-back for what stayed out of it.
+  void carry_along(Map& map, const std::vector<Eigen::Isometry3d>& T_w_c_before) const;
 
   BaProblem problem_;
   std::vector<int> keyframes_;  // problem pose -> map keyframe

@@ -79,12 +79,11 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
       TrackedFrame record = tracker.track(frame);
       FrameTiming timing{frame.decode_ms, frame.features_ms, frame.window_code_ms};
       if (record.keyframe) {
-        std::vector<Eigen::Isometry3d> since_keyframe(result.tracked_poses.begin() +
-                                                          long(last_keyframe_frame),
-                                                      result.tracked_poses.end());
+        std::vector<Eigen::Isometry3d> since_keyframe(
+            result.tracked_poses.begin() + long(last_keyframe_frame), result.tracked_poses.end());
         since_keyframe.push_back(record.T_w_c);
-        const double motion = quasi_static_motion(
-            since_keyframe, settings.optimization.local.motion_rotation_weight);
+        const double motion =
+            quasi_static_motion(since_keyframe, settings.optimization.local.motion_rotation_weight);
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
         record.T_ref_c = Eigen::Isometry3d::Identity();
@@ -133,13 +132,14 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
     for (const Keyframe& k : result.map.keyframes()) frames.push_back({k.frame_index, k.T_w_c});
   } else {
     for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
-      if (!result.frames[i].lost) frames.push_back({result.frames[i].index, result.frames[i].T_w_c});
+      if (!result.frames[i].lost)
+        frames.push_back({result.frames[i].index, result.frames[i].T_w_c});
   }
   if (frames.empty()) return;
-  result.fusion = fuse_map(sequence, frames, settings.fusion, ply_path,
-                           [&](size_t done, size_t total) {
-                             if (progress) progress("map", done, total);
-                           });
+  result.fusion =
+      fuse_map(sequence, frames, settings.fusion, ply_path, [&](size_t done, size_t total) {
+        if (progress) progress("map", done, total);
+      });
   // The keyframes' centres beside the map, so that a viewer shows both.
   std::vector<FusionFrame> keyframes;
   for (const Keyframe& k : result.map.keyframes()) keyframes.push_back({k.frame_index, k.T_w_c});

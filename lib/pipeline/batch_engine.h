@@ -23,24 +23,24 @@ struct FrameTiming {
 
 // Wall time of each stage, seconds.
 struct StageTimes {
-  double prepare = 0;    // parallel stage, summed over chunks (overlaps tracking)
-  double track = 0;      // tracking and mapping, local BA included
-  double local_ba = 0;   // local BA solving, beside tracking (or inside it with one thread)
+  double prepare = 0;   // parallel stage, summed over chunks (overlaps tracking)
+  double track = 0;     // tracking and mapping, local BA included
+  double local_ba = 0;  // local BA solving, beside tracking (or inside it with one thread)
   double global_ba = 0;
   double fusion = 0;
   double write = 0;
-  double total = 0;      // decode to the last file written
+  double total = 0;  // decode to the last file written
 };
 
 struct RunResult {
-  std::vector<TrackedFrame> frames;  // one per associated frame, in order; final poses
-  std::vector<FrameTiming> timing;   // one per frame
+  std::vector<TrackedFrame> frames;              // one per associated frame, in order; final poses
+  std::vector<FrameTiming> timing;               // one per frame
   std::vector<Eigen::Isometry3d> tracked_poses;  // as tracking produced them, per frame
   std::vector<MappingReport> keyframe_reports;   // one per keyframe
   Map map;
   MapAdjustment global_ba;  // empty unless the global BA ran
   bool global_ba_run = false;
-  FusionReport fusion;      // frames == 0 unless the map was fused
+  FusionReport fusion;  // frames == 0 unless the map was fused
   StageTimes seconds;
   int threads = 1;
 

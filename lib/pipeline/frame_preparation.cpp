@@ -2,8 +2,8 @@
 
 #include <exception>
 
-#include "features/orb_extractor.h"
 #include "core/stopwatch.h"
+#include "features/orb_extractor.h"
 
 namespace slamkit {
 

@@ -99,19 +99,20 @@ std::vector<std::string> describe_failures(const RunResult& result) {
     size_t end = i;
     while (end + 1 < frames.size() && frames[end + 1].lost) ++end;
     std::string line = "frame " + std::to_string(frames[i].index);
-    if (end > i) line = "frames " + std::to_string(frames[i].index) + "-" + std::to_string(frames[end].index);
+    if (end > i)
+      line = "frames " + std::to_string(frames[i].index) + "-" + std::to_string(frames[end].index);
     line += " lost (" + frames[i].failure + "), motion model used; ";
     line += end + 1 < frames.size()
-                ? "tracking recovered at frame " + std::to_string(frames[end + 1].index) + " after " +
-                      std::to_string(end - i + 1) + " frame(s)"
+                ? "tracking recovered at frame " + std::to_string(frames[end + 1].index) +
+                      " after " + std::to_string(end - i + 1) + " frame(s)"
                 : "not recovered before the end";
     lines.push_back(line);
   }
   return lines;
 }
 
-void write_run_outputs(const fs::path& dir, const std::string& sequence_name,
-                       const Camera& camera, const Settings& settings, const RunResult& result) {
+void write_run_outputs(const fs::path& dir, const std::string& sequence_name, const Camera& camera,
+                       const Settings& settings, const RunResult& result) {
   fs::create_directories(dir);
   write_tum_trajectory(dir / "trajectory.txt", result.trajectory(),
                        "slamkit trajectory of " + sequence_name + " (T_w_c, every frame)");
@@ -137,13 +138,14 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   json["frames"] = result.frames.size();
   json["keyframes"] = result.map.keyframes().size();
   json["threads"] = result.threads;
-  json["seconds"] = {{"prepare", t.prepare}, {"track", t.track},        {"local_ba", t.local_ba},
+  json["seconds"] = {{"prepare", t.prepare},     {"track", t.track},   {"local_ba", t.local_ba},
                      {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
                      {"total", t.total}};
   json["frames_per_second"] = timing.frames_per_second;
   json["tracking_median_ms"] = timing.tracking_median_ms;
   for (const StageStats& s : timing.stages)
-    json["stages"][s.name] = {{"median_ms", s.median_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
+    json["stages"][s.name] = {
+        {"median_ms", s.median_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
   const fs::path path = dir / "timing.json";
   std::ofstream out(path);
   out << json.dump(2) << "\n";

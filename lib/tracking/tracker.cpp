@@ -67,7 +67,9 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     record.T_w_c = orthonormalised(estimate.T_w_c);
     record.inliers = int(estimate.inliers.size());
     settle_inliers(record.lost ? std::vector<Match>{} : estimate.inliers, record);
-    if (!record.lost) choose_keyframe(frame, record);
+    // A frame re-acquired after a failure was matched to one keyframe, not the local map: its
+    // pose is the least reliable, and a keyframe made from it would carry that into the map.
+    if (!record.lost && !previous_lost_) choose_keyframe(frame, record);
     record.keyframe_ms = watch.lap();
   }
   poses_.push_back({frame.stamp, record.T_w_c});

@@ -95,7 +95,8 @@ TEST(LocalMapper, DuplicatesOfTheSamePointAreFused) {
   EXPECT_EQ(report.new_points, 30);
   EXPECT_EQ(report.fused_points, 30);
   EXPECT_EQ(map.num_good_points(), 60);
-  for (size_t i = 0; i < 60; ++i) EXPECT_EQ(map.keyframe(1).point_ids[i], map.keyframe(0).point_ids[i]);
+  for (size_t i = 0; i < 60; ++i)
+    EXPECT_EQ(map.keyframe(1).point_ids[i], map.keyframe(0).point_ids[i]);
 }
 
 TEST(LocalMapper, PointsSeenByOneKeyframeAreCulledAfterTwoMore) {

@@ -7,8 +7,8 @@
 #include "pipeline/batch_engine.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
-#include "support/test_data.h"
 #include "pipeline_test_support.h"
+#include "support/test_data.h"
 
 namespace slamkit {
 namespace {
