@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job on the embedded default: sets up (scripts/setup.sh), then tracks a sequence and
-# evaluates the trajectory against its groundtruth (ATE, RPE, plots).
+# The main job on the embedded default: sets up (scripts/setup.sh), then runs the whole pipeline
+# on a sequence (tracking with local BA, global BA, the fused map.ply) and evaluates it against
+# its groundtruth (ATE, RPE, plots; map accuracy on a synthetic sequence).
 #   scripts/demo.sh                 # renders the default synthetic sequence and processes it
 #   scripts/demo.sh SEQUENCE_DIR    # a TUM sequence folder instead (e.g. from download_tum.sh)
 # Output goes to runs/demo/ (override with SLAMKIT_RUN_DIR).
@@ -18,5 +19,6 @@ if [[ -z "$sequence" ]]; then
   "$slamkit" synth --preset desk --frames 300 --out "$sequence"
 fi
 "$slamkit" info "$sequence"
-"$slamkit" track "$sequence" --out "$run_dir/track"
-echo "demo: trajectory, tracking report, metrics and plots in $run_dir/track"
+"$slamkit" run "$sequence" --out "$run_dir/run"
+echo "demo: trajectory, reports, metrics and plots in $run_dir/run"
+echo "demo: map $run_dir/run/map.ply"

@@ -143,6 +143,8 @@ void visit_fields(LocalBaSettings& s, V& v) {
   v.field("motion_rotation_weight", s.motion_rotation_weight);
   v.field("min_motion", s.min_motion);
   v.field("max_covisible_keyframes", s.max_covisible_keyframes);
+  v.field("max_fixed_keyframes", s.max_fixed_keyframes);
+  v.field("every_keyframes", s.every_keyframes);
 }
 
 template <class V>

@@ -37,7 +37,8 @@ int LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
   if (settings_.mapping.fuse_duplicates) report.fused_points = fuse_duplicates(id);
 
   const LocalBaSettings& ba = settings_.optimization.local;
-  if (ba.enabled && id >= 2 && motion >= ba.min_motion) {
+  if (ba.enabled && id >= 2 && motion >= ba.min_motion &&
+      id % std::max(1, ba.every_keyframes) == 0) {
     pending_ = std::make_unique<MapBaJob>(
         MapBaJob::local_window(map_, id, camera_, settings_.optimization));
     solving_ = std::async(launch_, [job = pending_.get()] { job->solve(); });

@@ -20,7 +20,7 @@ constexpr int kReducedGroup = 1;
 // Up to this many free poses the reduced camera system (6 per pose) is factorised densely:
 // for a local window that costs well under a millisecond, less than SPARSE_SCHUR's symbolic
 // analysis at every Solve (measured: 2.6 against 8-10 ms of preprocessing per Solve on the
-// 20-keyframe window). Whole-map problems stay sparse.
+// 20-keyframe window).
 constexpr int kMaxDenseSchurPoses = 30;
 
 ceres::Solver::Options solver_options(int iterations) {
@@ -153,11 +153,13 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   if (problem.NumResidualBlocks() == 0) return true;
 
   ceres::Solver::Options options = solver_options(iterations);
+  // Larger problems: conjugate gradients on the reduced system, preconditioned by its
+  // diagonal blocks. In a room every keyframe sees most others, so the reduced system is
+  // nearly dense and a sparse Cholesky of it dominates: on synthetic desk 600 (189 keyframes,
+  // 13,500 points) global BA took 7.5 s with SPARSE_SCHUR, 4.4 s with this, same ATE.
   options.linear_solver_type =
-      free_poses <= kMaxDenseSchurPoses ? ceres::DENSE_SCHUR : ceres::SPARSE_SCHUR;
-  // Eigen's sparse Cholesky took 10% less time than SuiteSparse's on a whole-map problem of
-  // 150 keyframes and 30,000 points.
-  options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
+      free_poses <= kMaxDenseSchurPoses ? ceres::DENSE_SCHUR : ceres::ITERATIVE_SCHUR;
+  options.preconditioner_type = ceres::SCHUR_JACOBI;
   options.linear_solver_ordering = ordering;
   ceres::Solver::Summary summary;
   const std::vector<double> before = parameters_;

@@ -21,6 +21,23 @@ std::vector<int> constrained(const Map& map, const std::vector<int>& keyframes,
   return kept;
 }
 
+// The keyframes outside `in_problem` observing `points`, most observations first (then by
+// index), at most `limit` of them (0 = all).
+std::vector<int> fixed_observers(const Map& map, const std::vector<int>& points,
+                                 const std::map<int, int>& in_problem, int limit) {
+  std::map<int, int> shared;
+  for (int id : points)
+    for (const Observation& o : map.point(id).observations)
+      if (!in_problem.count(o.keyframe)) ++shared[o.keyframe];
+  std::vector<std::pair<int, int>> ranked;  // (-shared, keyframe)
+  for (const auto& [k, count] : shared) ranked.push_back({-count, k});
+  std::sort(ranked.begin(), ranked.end());
+  if (limit > 0 && ranked.size() > size_t(limit)) ranked.resize(size_t(limit));
+  std::vector<int> keyframes;
+  for (const auto& [negative_count, k] : ranked) keyframes.push_back(k);
+  return keyframes;
+}
+
 std::vector<int> good_points_of(const Map& map, const std::vector<int>& keyframes) {
   std::vector<int> ids;
   for (int k : keyframes)
@@ -48,8 +65,8 @@ MapBaJob MapBaJob::whole_map(const Map& map, const Camera& camera,
   return MapBaJob(map, constrained(map, all, settings), camera, settings, false);
 }
 
-// Every observation of the free keyframes' points. Local BA adds the other keyframes observing
-// them as fixed; global BA leaves them out.
+// Every observation of the free keyframes' points by a keyframe in the problem. Local BA adds
+// the other keyframes observing them as fixed; global BA leaves them out.
 MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const Camera& camera,
                    const OptimizationSettings& settings, bool local)
     : intrinsics_{camera.fx, camera.fy, camera.cx, camera.cy}, settings_(settings), local_(local) {
@@ -63,17 +80,22 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
     return it->second;
   };
   for (int k : free_keyframes) add_pose(k, false);
+  const std::vector<int> points = good_points_of(map, free_keyframes);
+  if (local) {
+    for (int k : fixed_observers(map, points, pose_of, settings.local.max_fixed_keyframes))
+      add_pose(k, true);
+  }
   const PyramidGeometry& pyramid = map.pyramid();
-  for (int id : good_points_of(map, free_keyframes)) {
+  for (int id : points) {
     const MapPoint& p = map.point(id);
     const int index = int(points_.size());
     points_.push_back(id);
     problem_.p_w.push_back(p.p_w);
     for (const Observation& o : p.observations) {
-      if (!local && !pose_of.count(o.keyframe)) continue;
+      if (!pose_of.count(o.keyframe)) continue;
       const Keyframe& k = map.keyframe(o.keyframe);
       BaObservation b;
-      b.pose = add_pose(o.keyframe, true);
+      b.pose = pose_of.at(o.keyframe);
       b.point = index;
       b.uv = k.undistorted[size_t(o.keypoint)];
       b.depth = k.depths[size_t(o.keypoint)];

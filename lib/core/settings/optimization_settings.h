@@ -37,6 +37,13 @@ struct LocalBaSettings {
   // ORB-SLAM2, which keeps the window small by culling redundant keyframes (we keep every
   // keyframe: in a room the window then grows to most of the map, 200 ms a solve at 40).
   int max_covisible_keyframes = 10;
+  // (ours) Of the other keyframes observing the window's points (held fixed), those sharing
+  // the most points with it; 0 = all (ORB-SLAM2). In a room most of the map sees the window's
+  // points: 170 fixed keyframes and 30,000 observations at the end of synthetic desk 600.
+  int max_fixed_keyframes = 20;
+  // (ours) Local BA at every n-th keyframe only (1 = each, as the paper); each window spans
+  // the best covisible keyframes, so skipping one in n leaves no keyframe unadjusted.
+  int every_keyframes = 1;
 };
 
 // Global BA after tracking: every keyframe and point, the first keyframe fixed.
