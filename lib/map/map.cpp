@@ -121,8 +121,30 @@ void Map::update_connections(int keyframe) {
 }
 
 void Map::link(int keyframe, int other, int weight) {
-  keyframes_[size_t(keyframe)].shared_points[other] = weight;
-  sort_covisible(keyframe);
+  // Moves `other` within the sorted neighbour list instead of sorting it again: in a room every
+  // keyframe neighbours hundreds of others, and each new keyframe updates all of them.
+  Keyframe& k = keyframes_[size_t(keyframe)];
+  std::vector<int>& list = k.covisible;
+  const auto weight_of = [&](int n) { return k.shared_points.at(n); };
+  const bool fallback = list.size() == 1 && weight_of(list.front()) < covisibility_min_shared_;
+  // Best first, then lowest index.
+  const auto position = [&](int w, int id) {
+    return std::lower_bound(list.begin(), list.end(), id, [&](int n, int) {
+      const int wn = weight_of(n);
+      return wn > w || (wn == w && n < id);
+    });
+  };
+  const auto old = k.shared_points.find(other);
+  if (!fallback && old != k.shared_points.end() && old->second >= covisibility_min_shared_) {
+    const auto it = position(old->second, other);
+    if (it != list.end() && *it == other) list.erase(it);
+  }
+  k.shared_points[other] = weight;
+  if (fallback || list.empty()) {
+    sort_covisible(keyframe);
+  } else if (weight >= covisibility_min_shared_) {
+    list.insert(position(weight, other), other);
+  }
 }
 
 void Map::sort_covisible(int keyframe) {
@@ -139,11 +161,19 @@ void Map::sort_covisible(int keyframe) {
 
 void Map::update_point_descriptor(int point) {
   MapPoint& p = points_[size_t(point)];
-  const size_t n = p.observations.size();
-  if (n == 0) return;
+  if (p.observations.empty()) return;
+  // The choice costs the square of the views compared: over a room filmed for minutes a point
+  // gathers hundreds of views (ORB-SLAM2 culls redundant keyframes; we keep them), so only the
+  // most recent kDescriptorViews take part.
+  const size_t first = p.observations.size() > kDescriptorViews
+                           ? p.observations.size() - kDescriptorViews
+                           : 0;
+  const size_t n = p.observations.size() - first;
   std::vector<const uchar*> descriptors;
-  for (const Observation& o : p.observations)
+  for (size_t i = first; i < p.observations.size(); ++i) {
+    const Observation& o = p.observations[i];
     descriptors.push_back(keyframes_[size_t(o.keyframe)].descriptors.ptr<uchar>(o.keypoint));
+  }
   size_t best = 0;
   int best_median = std::numeric_limits<int>::max();
   std::vector<int> row(n);

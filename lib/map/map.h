@@ -43,8 +43,9 @@ class Map {
   // Recounts the points the keyframe shares with every other keyframe, links them in the
   // covisibility graph (both ways) and, the first time, sets its parent in the spanning tree.
   void update_connections(int keyframe);
-  // The representative descriptor, mean viewing direction and distance range of a point,
-  // from its current observations.
+  // The representative descriptor (among the last kDescriptorViews observations), mean
+  // viewing direction and distance range of a point, from its current observations.
+  static constexpr size_t kDescriptorViews = 32;
   void update_point_descriptor(int point);
   void update_point_geometry(int point);
 

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 namespace slamkit {
 namespace {
 
@@ -69,6 +72,38 @@ TEST(Map, CovisibilityLinksKeyframesSharingFifteenPointsWithTheirWeights) {
   // With no neighbour reaching 15, the best one is linked alone (ORB-SLAM2).
   EXPECT_EQ(map.keyframe(2).covisible.size(), 1u);
   EXPECT_EQ(map.best_covisible(0, 1), (std::vector<int>{1}));
+}
+
+TEST(Map, NeighbourListsStaySortedAsLinksChange) {
+  // Keyframes observing random subsets of 60 points, some later losing points: every list
+  // must equal the one sorted from scratch (weight >= 15 best first, then lowest index; the
+  // best alone when none reaches 15).
+  Map map(PyramidGeometry{}, 15);
+  std::mt19937 rng(3);
+  map.add_keyframe(keyframe_with(60, 0));
+  for (int i = 0; i < 60; ++i) map.add_point(Eigen::Vector3d(0.01 * i, 0, 2), 0, i);
+  map.update_connections(0);
+  for (size_t k = 1; k < 30; ++k) {
+    Keyframe kf = keyframe_with(60, k);
+    const int count = std::uniform_int_distribution<int>(5, 60)(rng);
+    for (int i = 0; i < count; ++i) kf.point_ids[size_t(i)] = i;
+    const int id = map.add_keyframe(std::move(kf));
+    map.update_connections(id);
+    if (k % 7 == 0) {  // some points lose their first views
+      for (int i = 0; i < 10; ++i) map.erase_observation(i, int(k) - 3);
+      map.update_connections(int(k) - 3);
+    }
+  }
+  for (const Keyframe& k : map.keyframes()) {
+    std::vector<std::pair<int, int>> ranked;
+    for (const auto& [other, weight] : k.shared_points) ranked.push_back({-weight, other});
+    std::sort(ranked.begin(), ranked.end());
+    std::vector<int> expected;
+    for (const auto& [negative, other] : ranked)
+      if (-negative >= 15) expected.push_back(other);
+    if (expected.empty() && !ranked.empty()) expected.push_back(ranked.front().second);
+    EXPECT_EQ(k.covisible, expected) << "keyframe " << k.frame_index;
+  }
 }
 
 TEST(Map, SpanningTreeParentIsTheBestNeighbourAtInsertion) {
