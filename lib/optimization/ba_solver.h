@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/stopwatch.h"
 #include "optimization/ba_residual.h"
 #include "optimization/bundle_adjustment.h"
 
@@ -76,5 +77,23 @@ class BaSolver {
   double initial_cost_ = 0;
   double final_cost_ = 0;
 };
+
+// What every schedule shares: an unsolvable problem (no free pose or no observation) is left
+// unchanged; `schedule(solver)` runs the phases and says whether they all succeeded; then the
+// final outlier classification, the write-back and the report.
+template <class Schedule>
+BaReport solve_with_schedule(BaProblem& problem, const BaIntrinsics& intrinsics,
+                             const BaResidualSettings& residual, Schedule&& schedule) {
+  Stopwatch stopwatch;
+  BaSolver solver(problem, intrinsics, residual);
+  BaReport report;
+  report.outlier.assign(problem.observations.size(), false);
+  if (!solver.solvable() || !schedule(solver)) return report;
+  solver.classify();
+  solver.write_back(problem);
+  report = solver.report();
+  report.seconds = stopwatch.lap() * 1e-3;
+  return report;
+}
 
 }  // namespace slamkit

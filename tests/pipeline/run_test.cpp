@@ -97,15 +97,16 @@ TEST(Run, SyntheticDesk600BackEndBeatsTheFrontEndAndWritesTheMap) {
   for (const Eigen::Vector3f& p : cloud.points) ASSERT_TRUE(p.allFinite());
   // Against the true scene (the map aligned into groundtruth by the trajectory's alignment).
   std::string output;
-  ASSERT_EQ(test::run_slamkit("map-eval " + (out / "map.ply").string() + " " +
-                                  seq.folder().string() + " --trajectory " +
-                                  (out / "trajectory.txt").string() + " --json " +
-                                  (out / "map_quality.json").string(),
-                              &output),
-            0)
+  ASSERT_EQ(
+      test::run_slamkit("map-eval " + (out / "map.ply").string() + " " + seq.folder().string() +
+                            " --trajectory " + (out / "trajectory.txt").string() + " --json " +
+                            (out / "map_quality.json").string(),
+                        &output),
+      0)
       << output;
   std::printf("%s", output.c_str());
-  const nlohmann::json map = nlohmann::json::parse(test::file_text(out / "map_quality.json"))["map"];
+  const nlohmann::json map =
+      nlohmann::json::parse(test::file_text(out / "map_quality.json"))["map"];
   EXPECT_LE(map["accuracy"]["median"].get<double>(), 0.01);
   EXPECT_LE(map["accuracy"]["p95"].get<double>(), 0.03);
   EXPECT_GE(map["completeness"].get<double>(), 0.95);
