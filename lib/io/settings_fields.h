@@ -1,101 +1,126 @@
 #pragma once
 // The one list of every settings field with its YAML name, walked by the reader and the
 // writer alike (a visitor), so that adding a setting is one line here.
-// A visitor provides: field(name, value&) for numbers, booleans and enums, and
-// section(name, callable) for nested structs.
+// A visitor provides: field(name, value&, range) for numbers, field(name, value&) for
+// booleans, enums and seeds (every value valid), and section(name, settings&) for nested
+// structs.
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/enum_names.h"
+#include "core/number_format.h"
 #include "core/settings/settings.h"
 
 namespace slamkit {
 
+// The values a numeric setting accepts: lo..hi, lo itself excluded when lo_excluded (a scale
+// factor must exceed 1). NaN and infinities are outside every range.
+struct Range {
+  double lo;
+  double hi;
+  bool lo_excluded = false;
+};
+inline constexpr double kNoLimit = std::numeric_limits<double>::max();
+constexpr Range at_least(double lo) { return {lo, kNoLimit}; }
+constexpr Range above(double lo, double hi = kNoLimit) { return {lo, hi, true}; }
+
+inline bool in_range(double value, const Range& range) {
+  return std::isfinite(value) && (range.lo_excluded ? value > range.lo : value >= range.lo) &&
+         value <= range.hi;
+}
+// "1..100000", "1 (excluded)..2", "0..inf".
+inline std::string range_text(const Range& range) {
+  return format_exact(range.lo) + (range.lo_excluded ? " (excluded).." : "..") +
+         (range.hi == kNoLimit ? "inf" : format_exact(range.hi));
+}
+
 template <class V>
 void visit_fields(OrbSettings& s, V& v) {
-  v.field("num_features", s.num_features);
-  v.field("pyramid_levels", s.pyramid_levels);
-  v.field("scale_factor", s.scale_factor);
+  v.field("num_features", s.num_features, {1, 100000});
+  v.field("pyramid_levels", s.pyramid_levels, {1, 12});
+  v.field("scale_factor", s.scale_factor, above(1, 2));
   v.field("fast_type", s.fast_type);
-  v.field("fast_threshold", s.fast_threshold);
-  v.field("fast_min_threshold", s.fast_min_threshold);
+  v.field("fast_threshold", s.fast_threshold, {1, 255});
+  v.field("fast_min_threshold", s.fast_min_threshold, {1, 255});
   v.field("spread_over_image", s.spread_over_image);
-  v.field("cell_size", s.cell_size);
-  v.field("max_cell_share", s.max_cell_share);
-  v.field("shi_tomasi_block_size", s.shi_tomasi_block_size);
-  v.field("edge_threshold", s.edge_threshold);
+  v.field("cell_size", s.cell_size, {1, 10000});
+  v.field("max_cell_share", s.max_cell_share, above(0));
+  v.field("shi_tomasi_block_size", s.shi_tomasi_block_size, {1, 99});
+  v.field("edge_threshold", s.edge_threshold, {0, 1000});
 }
 
 template <class V>
 void visit_fields(MatcherSettings& s, V& v) {
   v.field("backend", s.backend);
-  v.field("lsh_table_number", s.lsh_table_number);
-  v.field("lsh_key_size", s.lsh_key_size);
-  v.field("lsh_multi_probe_level", s.lsh_multi_probe_level);
+  v.field("lsh_table_number", s.lsh_table_number, {1, 100});
+  v.field("lsh_key_size", s.lsh_key_size, {1, 32});
+  v.field("lsh_multi_probe_level", s.lsh_multi_probe_level, {0, 10});
   v.field("lsh_seed", s.lsh_seed);
-  v.field("ratio", s.ratio);
+  v.field("ratio", s.ratio, above(0, 1));
   v.field("mutual_check", s.mutual_check);
-  v.field("max_distance", s.max_distance);
-  v.field("projection_radius", s.projection_radius);
-  v.field("projection_max_distance", s.projection_max_distance);
-  v.field("projection_ratio", s.projection_ratio);
-  v.field("projection_octave_window", s.projection_octave_window);
-  v.field("grid_cell_size", s.grid_cell_size);
+  v.field("max_distance", s.max_distance, {0, 256});
+  v.field("projection_radius", s.projection_radius, above(0));
+  v.field("projection_max_distance", s.projection_max_distance, {0, 256});
+  v.field("projection_ratio", s.projection_ratio, above(0, 1));
+  v.field("projection_octave_window", s.projection_octave_window, {0, 12});
+  v.field("grid_cell_size", s.grid_cell_size, above(0));
 }
 
 template <class V>
 void visit_fields(RansacSettings& s, V& v) {
-  v.field("threshold_base", s.threshold_base);
-  v.field("threshold_quadratic", s.threshold_quadratic);
-  v.field("max_iterations", s.max_iterations);
-  v.field("confidence", s.confidence);
-  v.field("min_sample_spread", s.min_sample_spread);
-  v.field("min_sample_shape", s.min_sample_shape);
+  v.field("threshold_base", s.threshold_base, at_least(0));
+  v.field("threshold_quadratic", s.threshold_quadratic, at_least(0));
+  v.field("max_iterations", s.max_iterations, at_least(1));
+  v.field("confidence", s.confidence, {0, 1});
+  v.field("min_sample_spread", s.min_sample_spread, at_least(0));
+  v.field("min_sample_shape", s.min_sample_shape, {0, 1});
   v.field("seed", s.seed);
 }
 
 template <class V>
 void visit_fields(PointToPlaneSettings& s, V& v) {
-  v.field("pyramid_levels", s.pyramid_levels);
-  v.field("iterations_per_level", s.iterations_per_level);
-  v.field("max_pair_distance", s.max_pair_distance);
-  v.field("max_normal_angle_deg", s.max_normal_angle_deg);
-  v.field("max_neighbour_depth_ratio", s.max_neighbour_depth_ratio);
+  v.field("pyramid_levels", s.pyramid_levels, {1, 8});
+  v.field("iterations_per_level", s.iterations_per_level, {1, 1000});
+  v.field("max_pair_distance", s.max_pair_distance, above(0));
+  v.field("max_normal_angle_deg", s.max_normal_angle_deg, {0, 180});
+  v.field("max_neighbour_depth_ratio", s.max_neighbour_depth_ratio, {0, 1});
   v.field("central_difference_normals", s.central_difference_normals);
-  v.field("convergence_rotation", s.convergence_rotation);
-  v.field("convergence_translation", s.convergence_translation);
-  v.field("min_correspondences", s.min_correspondences);
-  v.field("min_eigenvalue", s.min_eigenvalue);
-  v.field("normal_smoothing_diameter", s.normal_smoothing_diameter);
-  v.field("normal_smoothing_sigma_depth", s.normal_smoothing_sigma_depth);
+  v.field("convergence_rotation", s.convergence_rotation, at_least(0));
+  v.field("convergence_translation", s.convergence_translation, at_least(0));
+  v.field("min_correspondences", s.min_correspondences, at_least(1));
+  v.field("min_eigenvalue", s.min_eigenvalue, {0, 1});
+  v.field("normal_smoothing_diameter", s.normal_smoothing_diameter, {0, 100});
+  v.field("normal_smoothing_sigma_depth", s.normal_smoothing_sigma_depth, above(0));
 }
 
 template <class V>
 void visit_fields(MotionBaSettings& s, V& v) {
-  v.field("rounds", s.rounds);
-  v.field("iterations_per_round", s.iterations_per_round);
-  v.field("robust_rounds", s.robust_rounds);
-  v.field("chi2_2d", s.chi2_2d);
-  v.field("chi2_3d", s.chi2_3d);
+  v.field("rounds", s.rounds, {0, 100});
+  v.field("iterations_per_round", s.iterations_per_round, {0, 1000});
+  v.field("robust_rounds", s.robust_rounds, {0, 100});
+  v.field("chi2_2d", s.chi2_2d, above(0));
+  v.field("chi2_3d", s.chi2_3d, above(0));
   v.field("use_depth", s.use_depth);
-  v.field("virtual_bf", s.virtual_bf);
-  v.field("min_inliers", s.min_inliers);
-  v.field("min_matches_after_dense", s.min_matches_after_dense);
+  v.field("virtual_bf", s.virtual_bf, above(0));
+  v.field("min_inliers", s.min_inliers, at_least(0));
+  v.field("min_matches_after_dense", s.min_matches_after_dense, at_least(0));
 }
 
 template <class V>
 void visit_fields(FailureSettings& s, V& v) {
-  v.field("max_speed", s.max_speed);
-  v.field("max_angular_speed_deg", s.max_angular_speed_deg);
-  v.field("min_dt", s.min_dt);
-  v.field("min_inliers", s.min_inliers);
+  v.field("max_speed", s.max_speed, above(0));
+  v.field("max_angular_speed_deg", s.max_angular_speed_deg, above(0));
+  v.field("min_dt", s.min_dt, above(0));
+  v.field("min_inliers", s.min_inliers, at_least(0));
 }
 
 template <class V>
 void visit_fields(TrackingSettings& s, V& v) {
-  v.field("min_pairs_for_svd", s.min_pairs_for_svd);
-  v.field("lost_search_radius_factor", s.lost_search_radius_factor);
-  v.field("min_matches_for_box", s.min_matches_for_box);
-  v.field("relocalisation_candidates", s.relocalisation_candidates);
+  v.field("min_pairs_for_svd", s.min_pairs_for_svd, at_least(3));
+  v.field("lost_search_radius_factor", s.lost_search_radius_factor, {1, 100});
+  v.field("min_matches_for_box", s.min_matches_for_box, at_least(0));
+  v.field("relocalisation_candidates", s.relocalisation_candidates, at_least(0));
   v.section("ransac", s.ransac);
   v.section("point_to_plane", s.point_to_plane);
   v.section("motion_ba", s.motion_ba);
@@ -104,60 +129,60 @@ void visit_fields(TrackingSettings& s, V& v) {
 
 template <class V>
 void visit_fields(KeyframeSettings& s, V& v) {
-  v.field("similarity_threshold", s.similarity_threshold);
-  v.field("pyramid_levels", s.pyramid_levels);
-  v.field("scale_factor", s.scale_factor);
+  v.field("similarity_threshold", s.similarity_threshold, {0, 1});
+  v.field("pyramid_levels", s.pyramid_levels, {1, 12});
+  v.field("scale_factor", s.scale_factor, above(1, 2));
   v.field("pattern_seed", s.pattern_seed);
-  v.field("neighbour_frames", s.neighbour_frames);
-  v.field("min_tracked_ratio", s.min_tracked_ratio);
+  v.field("neighbour_frames", s.neighbour_frames, {0, 100});
+  v.field("min_tracked_ratio", s.min_tracked_ratio, {0, 1});
 }
 
 template <class V>
 void visit_fields(MappingSettings& s, V& v) {
-  v.field("covisibility_min_shared", s.covisibility_min_shared);
-  v.field("local_map_keyframes", s.local_map_keyframes);
-  v.field("cull_after_keyframes", s.cull_after_keyframes);
-  v.field("min_observations", s.min_observations);
-  v.field("min_found_ratio", s.min_found_ratio);
+  v.field("covisibility_min_shared", s.covisibility_min_shared, at_least(1));
+  v.field("local_map_keyframes", s.local_map_keyframes, at_least(1));
+  v.field("cull_after_keyframes", s.cull_after_keyframes, at_least(0));
+  v.field("min_observations", s.min_observations, at_least(1));
+  v.field("min_found_ratio", s.min_found_ratio, {0, 1});
   v.field("fuse_duplicates", s.fuse_duplicates);
-  v.field("fuse_neighbours", s.fuse_neighbours);
-  v.field("fuse_radius", s.fuse_radius);
-  v.field("fuse_max_distance", s.fuse_max_distance);
-  v.field("min_view_cos", s.min_view_cos);
+  v.field("fuse_neighbours", s.fuse_neighbours, at_least(0));
+  v.field("fuse_radius", s.fuse_radius, at_least(0));
+  v.field("fuse_max_distance", s.fuse_max_distance, {0, 256});
+  v.field("min_view_cos", s.min_view_cos, {-1, 1});
 }
 
 template <class V>
 void visit_fields(BaResidualSettings& s, V& v) {
   v.field("use_depth", s.use_depth);
-  v.field("virtual_bf", s.virtual_bf);
-  v.field("chi2_2d", s.chi2_2d);
-  v.field("chi2_3d", s.chi2_3d);
+  v.field("virtual_bf", s.virtual_bf, above(0));
+  v.field("chi2_2d", s.chi2_2d, above(0));
+  v.field("chi2_3d", s.chi2_3d, above(0));
 }
 
 template <class V>
 void visit_fields(LocalBaSettings& s, V& v) {
   v.field("enabled", s.enabled);
-  v.field("robust_iterations", s.robust_iterations);
-  v.field("refine_iterations", s.refine_iterations);
-  v.field("fix_points_after_iterations", s.fix_points_after_iterations);
-  v.field("motion_rotation_weight", s.motion_rotation_weight);
-  v.field("min_motion", s.min_motion);
-  v.field("max_covisible_keyframes", s.max_covisible_keyframes);
-  v.field("max_fixed_keyframes", s.max_fixed_keyframes);
-  v.field("every_keyframes", s.every_keyframes);
+  v.field("robust_iterations", s.robust_iterations, at_least(0));
+  v.field("refine_iterations", s.refine_iterations, at_least(0));
+  v.field("fix_points_after_iterations", s.fix_points_after_iterations, at_least(-1));
+  v.field("motion_rotation_weight", s.motion_rotation_weight, at_least(0));
+  v.field("min_motion", s.min_motion, at_least(0));
+  v.field("max_covisible_keyframes", s.max_covisible_keyframes, at_least(0));
+  v.field("max_fixed_keyframes", s.max_fixed_keyframes, at_least(0));
+  v.field("every_keyframes", s.every_keyframes, at_least(1));
 }
 
 template <class V>
 void visit_fields(GlobalBaSettings& s, V& v) {
   v.field("enabled", s.enabled);
-  v.field("iterations", s.iterations);
+  v.field("iterations", s.iterations, at_least(0));
   v.field("robust", s.robust);
-  v.field("refine_iterations", s.refine_iterations);
+  v.field("refine_iterations", s.refine_iterations, at_least(0));
 }
 
 template <class V>
 void visit_fields(OptimizationSettings& s, V& v) {
-  v.field("min_keyframe_points", s.min_keyframe_points);
+  v.field("min_keyframe_points", s.min_keyframe_points, at_least(0));
   v.section("residual", s.residual);
   v.section("local_ba", s.local);
   v.section("global_ba", s.global);
@@ -166,21 +191,21 @@ void visit_fields(OptimizationSettings& s, V& v) {
 template <class V>
 void visit_fields(FusionSettings& s, V& v) {
   v.field("enabled", s.enabled);
-  v.field("frame_step", s.frame_step);
-  v.field("pixel_stride", s.pixel_stride);
-  v.field("max_depth", s.max_depth);
-  v.field("voxel_size", s.voxel_size);
-  v.field("batch_frames", s.batch_frames);
+  v.field("frame_step", s.frame_step, at_least(0));
+  v.field("pixel_stride", s.pixel_stride, at_least(1));
+  v.field("max_depth", s.max_depth, above(0));
+  v.field("voxel_size", s.voxel_size, above(0));
+  v.field("batch_frames", s.batch_frames, at_least(1));
   v.field("remove_outliers", s.remove_outliers);
-  v.field("outlier_neighbours", s.outlier_neighbours);
-  v.field("outlier_std_ratio", s.outlier_std_ratio);
+  v.field("outlier_neighbours", s.outlier_neighbours, at_least(1));
+  v.field("outlier_std_ratio", s.outlier_std_ratio, at_least(0));
   v.field("binary_ply", s.binary_ply);
 }
 
 template <class V>
 void visit_fields(PipelineSettings& s, V& v) {
-  v.field("threads", s.threads);
-  v.field("chunk_frames", s.chunk_frames);
+  v.field("threads", s.threads, at_least(0));
+  v.field("chunk_frames", s.chunk_frames, at_least(1));
   v.field("evaluate", s.evaluate);
 }
 

@@ -6,9 +6,9 @@
 #include <type_traits>
 
 #include "core/error.h"
-#include "io/yaml_file.h"
 #include "core/number_format.h"
 #include "io/settings_fields.h"
+#include "io/yaml_file.h"
 
 namespace slamkit {
 namespace {
@@ -29,6 +29,11 @@ class YamlWriter {
     }
   }
 
+  template <class T>
+  void field(const char* name, T& value, const Range&) {
+    field(name, value);
+  }
+
   template <class S>
   void section(const char* name, S& settings) {
     out_ << YAML::Key << name << YAML::Value << YAML::BeginMap;
@@ -47,21 +52,16 @@ class YamlReader {
 
   template <class T>
   void field(const char* name, T& value) {
-    const YAML::Node child = take(name);
-    if (!child) return;
-    if constexpr (std::is_enum_v<T>) {
-      const auto named = value_named(enum_names(value), child.as<std::string>());
-      if (!named)
-        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name +
-                        " (" + choices(enum_names(value)) + ")");
-      value = *named;
-    } else {
-      try {
-        value = child.as<T>();
-      } catch (const YAML::Exception&) {
-        fail(child, prefix_ + name + " has the wrong type: '" + child.Scalar() + "'");
-      }
-    }
+    // Numbers with limits take a range (settings_fields.h); only these need none.
+    static_assert(std::is_same_v<T, bool> || std::is_enum_v<T> || std::is_unsigned_v<T>);
+    read(name, value);
+  }
+
+  template <class T>
+  void field(const char* name, T& value, const Range& range) {
+    const YAML::Node child = read(name, value);
+    if (child && !in_range(double(value), range))
+      fail(child, prefix_ + name + ": " + child.Scalar() + " is outside " + range_text(range));
   }
 
   template <class S>
@@ -82,6 +82,27 @@ class YamlReader {
   }
 
  private:
+  // Sets value from the file when the key is there; returns its node (null when absent).
+  template <class T>
+  YAML::Node read(const char* name, T& value) {
+    const YAML::Node child = take(name);
+    if (!child) return child;
+    if constexpr (std::is_enum_v<T>) {
+      const auto named = value_named(enum_names(value), child.as<std::string>());
+      if (!named)
+        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name + " (" +
+                        choices(enum_names(value)) + ")");
+      value = *named;
+    } else {
+      try {
+        value = child.as<T>();
+      } catch (const YAML::Exception&) {
+        fail(child, prefix_ + name + " has the wrong type: '" + child.Scalar() + "'");
+      }
+    }
+    return child;
+  }
+
   YAML::Node take(const char* name) {
     known_.insert(name);
     return node_[name];

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "io/settings_fields.h"
 #include "support/test_data.h"
 
 namespace slamkit {
@@ -75,10 +77,87 @@ void expect_error(const std::string& text, const std::string& fragment) {
 
 TEST(SettingsYaml, RejectsTyposWrongTypesAndBadEnumsNamingTheLine) {
   expect_error("orb:\n  num_feature: 500\n", "bad.yaml:2: unknown setting 'orb.num_feature'");
-  expect_error("tracking:\n  ransac:\n    seed: abc\n", "bad.yaml:3: tracking.ransac.seed has the wrong type");
+  expect_error("tracking:\n  ransac:\n    seed: abc\n",
+               "bad.yaml:3: tracking.ransac.seed has the wrong type");
   expect_error("orb:\n  fast_type: fast7\n", "bad.yaml:2: 'fast7' is not a value of orb.fast_type");
   expect_error("orbs: {}\n", "unknown setting 'orbs'");
   expect_error("orb: [1, 2]\n", "orb must be a map");
+}
+
+TEST(SettingsYaml, RejectsValuesOutsideTheirRangeNamingFileLineKeyValueAndRange) {
+  expect_error("orb:\n  num_features: -5\n",
+               "bad.yaml:2: orb.num_features: -5 is outside 1..100000");
+  expect_error("orb:\n  num_features: 0\n", "bad.yaml:2: orb.num_features: 0 is outside 1..100000");
+  expect_error("pipeline:\n  threads: -3\n", "bad.yaml:2: pipeline.threads: -3 is outside 0..inf");
+  expect_error("pipeline:\n  chunk_frames: 0\n",
+               "bad.yaml:2: pipeline.chunk_frames: 0 is outside 1..inf");
+  expect_error("tracking:\n  point_to_plane:\n    iterations_per_level: -1\n",
+               "bad.yaml:3: tracking.point_to_plane.iterations_per_level: -1 is outside 1..1000");
+  expect_error("orb:\n  pyramid_levels: 40\n",
+               "bad.yaml:2: orb.pyramid_levels: 40 is outside 1..12");
+  expect_error("orb:\n  scale_factor: .nan\n",
+               "bad.yaml:2: orb.scale_factor: .nan is outside 1 (excluded)..2");
+  expect_error("orb:\n  scale_factor: 1\n", "orb.scale_factor: 1 is outside 1 (excluded)..2");
+  expect_error("map:\n  voxel_size: .inf\n",
+               "bad.yaml:2: map.voxel_size: .inf is outside 0 (excluded)..inf");
+}
+
+TEST(SettingsYaml, RangeBoundsThemselvesAreAccepted) {
+  const fs::path dir = test::temp_dir("settings");
+  std::ofstream(dir / "s.yaml") << "orb:\n  num_features: 1\n  pyramid_levels: 12\n  "
+                                   "scale_factor: 2\npipeline:\n  threads: 0\n";
+  Settings s;
+  read_settings_yaml(dir / "s.yaml", s);
+  EXPECT_EQ(s.orb.num_features, 1);
+  EXPECT_EQ(s.orb.pyramid_levels, 12);
+  EXPECT_EQ(s.orb.scale_factor, 2.0);
+}
+
+// Walks every field of a Settings, checking each ranged one's value.
+class DefaultChecker {
+ public:
+  template <class T>
+  void field(const char*, T&) {}
+  template <class T>
+  void field(const char* name, T& value, const Range& range) {
+    ++checked;
+    EXPECT_TRUE(in_range(double(value), range))
+        << prefix_ << name << " = " << value << " is outside " << range_text(range);
+  }
+  template <class S>
+  void section(const char* name, S& settings) {
+    const std::string outer = prefix_;
+    prefix_ += std::string(name) + ".";
+    visit_fields(settings, *this);
+    prefix_ = outer;
+  }
+  int checked = 0;
+
+ private:
+  std::string prefix_;
+};
+
+TEST(SettingsYaml, EveryDefaultLiesInsideItsRange) {
+  Settings defaults;
+  DefaultChecker checker;
+  visit_fields(defaults, checker);
+  EXPECT_GT(checker.checked, 80);  // the walk reached every section
+}
+
+TEST(SettingsYaml, CliRejectsAnOutOfRangeSettingWithOneLineAndExitTwo) {
+  const fs::path dir = test::temp_dir("settings");
+  std::ofstream(dir / "bad.yaml") << "orb:\n  num_features: -5\n";
+  std::string output;
+  // The settings are read before the sequence is opened: no sequence needed.
+  EXPECT_EQ(
+      test::run_slamkit("track " + (dir / "none").string() + " --out " + (dir / "out").string() +
+                            " --settings " + (dir / "bad.yaml").string(),
+                        &output),
+      2);
+  EXPECT_NE(output.find("bad.yaml:2: orb.num_features: -5 is outside 1..100000"), std::string::npos)
+      << output;
+  EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 }  // namespace
