@@ -11,6 +11,7 @@
 #include "eval/ate.h"
 #include "eval/metrics_json.h"
 #include "io/settings_yaml.h"
+#include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 
 namespace slamkit::cli {
@@ -90,6 +91,7 @@ void run(const RunArgs& args) {
   if (args.ascii) settings.fusion.binary_ply = false;
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
 
+  const RunStart started = begin_run_folder(args.out, settings);
   RunResult result;
   {
     StageProgress progress;
@@ -102,6 +104,7 @@ void run(const RunArgs& args) {
     evaluate_run_folder(seq, args.out);
     if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
   }
+  write_run_status(started, result.seconds);
   std::printf("output      %s\n", args.out.c_str());
   if (result.fusion.frames > 0)
     std::printf("map         %s\n", (std::filesystem::path(args.out) / "map.ply").c_str());

@@ -30,6 +30,7 @@ void track(const TrackArgs& args) {
   settings = front_end_only(settings);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
 
+  const RunStart started = begin_run_folder(args.out, settings);
   RunResult result;
   {
     StageProgress progress;
@@ -39,6 +40,7 @@ void track(const TrackArgs& args) {
   print_tracking_summary(seq, result);
   std::printf("output      %s\n", args.out.c_str());
   if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out);
+  write_run_status(started, result.seconds);
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {

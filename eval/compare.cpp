@@ -71,6 +71,7 @@ std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& di
   for (const auto& dir : dirs) {
     EvaluatedRun run;
     run.dir = dir;
+    require_complete_run(dir);
     run.metrics = read_metrics_file(dir / "metrics.json");
     if (!run.metrics.contains("ate") || !run.metrics["ate"].is_object())
       throw_input_error((dir / "metrics.json").string(),

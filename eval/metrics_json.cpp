@@ -130,4 +130,18 @@ json read_metrics_file(const std::filesystem::path& path) {
   return j;
 }
 
+void require_complete_run(const std::filesystem::path& dir) {
+  const std::filesystem::path path = dir / "run.json";
+  if (!std::filesystem::exists(path)) return;
+  std::ifstream in(path);
+  const json j = json::parse(in, nullptr, false);
+  const json status = j.is_object() ? j.value("status", json()) : json();
+  if (status == "complete") return;
+  throw_input_error(path.string(),
+                    "the run is not complete (status " +
+                        (status.is_string() ? "'" + printable(status.get<std::string>(), 40) + "'"
+                                            : std::string("unreadable")) +
+                        "): it was interrupted or is still running; run it again");
+}
+
 }  // namespace slamkit::eval

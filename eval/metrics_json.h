@@ -35,4 +35,9 @@ void merge_into_metrics_file(const std::filesystem::path& path, const nlohmann::
 // Reads a metrics.json; InputError naming the file when missing or malformed.
 nlohmann::json read_metrics_file(const std::filesystem::path& path);
 
+// Refuses (InputError naming run.json) a run folder whose run.json, written last by `slamkit
+// run` and `track`, says other than "complete": the run was interrupted or is still going.
+// A folder without run.json (`eval all --out`, other tools) passes.
+void require_complete_run(const std::filesystem::path& dir);
+
 }  // namespace slamkit::eval

@@ -114,6 +114,7 @@ const MetricInfo* find_metric(const std::string& key) {
 }
 
 RunMetrics read_run_metrics(const fs::path& run_dir) {
+  eval::require_complete_run(run_dir);
   RunMetrics out;
   if (fs::exists(run_dir / "metrics.json")) {
     const fs::path file = run_dir / "metrics.json";

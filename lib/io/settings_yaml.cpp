@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/number_format.h"
+#include "io/atomic_file.h"
 #include "io/settings_fields.h"
 #include "io/yaml_file.h"
 
@@ -129,14 +130,20 @@ void read_settings_yaml(const std::filesystem::path& path, Settings& settings) {
   reader.reject_unknown_keys();
 }
 
-void write_settings_yaml(const std::filesystem::path& path, const Settings& settings) {
+std::string settings_yaml_text(const Settings& settings) {
   YAML::Emitter out;
   out << YAML::BeginMap;
   YamlWriter writer(out);
   Settings copy = settings;  // the visitor takes fields by reference; the writer only reads
   visit_fields(copy, writer);
   out << YAML::EndMap;
-  write_yaml_file(path, out);
+  return std::string(out.c_str()) + "\n";  // as write_yaml_file ends the document
+}
+
+void write_settings_yaml(const std::filesystem::path& path, const Settings& settings) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const std::string text = settings_yaml_text(settings);
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace slamkit

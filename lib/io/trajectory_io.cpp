@@ -13,6 +13,7 @@
 
 #include "core/enum_names.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 
 namespace slamkit {
 namespace {
@@ -231,29 +232,28 @@ TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
 void write_tum_trajectory(const std::filesystem::path& path, const Trajectory& trajectory,
                           const std::string& header_comment) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  if (!out) throw_input_error(path.string(), "cannot write file");
-  if (!header_comment.empty()) out << "# " << header_comment << "\n";
-  out << "# timestamp tx ty tz qx qy qz qw\n";
-  std::string line;
-  char number[400];  // fixed notation of the largest double needs 309 digits
-  const auto put = [&](double v, char separator) {
-    line.append(number,
-                std::to_chars(number, number + sizeof number, v, std::chars_format::fixed).ptr);
-    line += separator;
-  };
-  for (size_t i = 0; i < trajectory.size(); ++i) {
-    // The stored quaternion, canonical (qw >= 0) as pose_to_tum writes it.
-    Eigen::Quaterniond q = trajectory.orientation(i);
-    if (q.w() < 0) q.coeffs() = -q.coeffs();
-    const Eigen::Vector3d& t = trajectory.position(i);
-    line.clear();
-    put(trajectory.stamp(i), ' ');
-    for (double v : {t.x(), t.y(), t.z(), q.x(), q.y(), q.z()}) put(v, ' ');
-    put(q.w(), '\n');
-    out << line;
-  }
-  if (!out.flush()) throw_input_error(path.string(), "write failed");
+  write_file_atomically(path, [&](std::ostream& out) {
+    if (!header_comment.empty()) out << "# " << header_comment << "\n";
+    out << "# timestamp tx ty tz qx qy qz qw\n";
+    std::string line;
+    char number[400];  // fixed notation of the largest double needs 309 digits
+    const auto put = [&](double v, char separator) {
+      line.append(number,
+                  std::to_chars(number, number + sizeof number, v, std::chars_format::fixed).ptr);
+      line += separator;
+    };
+    for (size_t i = 0; i < trajectory.size(); ++i) {
+      // The stored quaternion, canonical (qw >= 0) as pose_to_tum writes it.
+      Eigen::Quaterniond q = trajectory.orientation(i);
+      if (q.w() < 0) q.coeffs() = -q.coeffs();
+      const Eigen::Vector3d& t = trajectory.position(i);
+      line.clear();
+      put(trajectory.stamp(i), ' ');
+      for (double v : {t.x(), t.y(), t.z(), q.x(), q.y(), q.z()}) put(v, ' ');
+      put(q.w(), '\n');
+      out << line;
+    }
+  });
 }
 
 std::string printable(std::string_view text, size_t max_length) {

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 
 namespace slamkit {
 
@@ -18,9 +19,7 @@ YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& 
 
 void write_yaml_file(const std::filesystem::path& path, const YAML::Emitter& document) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream file(path);
-  file << document.c_str() << "\n";
-  if (!file) throw_input_error(path.string(), "cannot write file");
+  write_file_atomically(path, [&](std::ostream& out) { out << document.c_str() << "\n"; });
 }
 
 }  // namespace slamkit

@@ -1,10 +1,16 @@
 #include "pipeline/run_output.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
-#include <fstream>
+#include <csignal>
+#include <cstring>
+#include <ctime>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/camera_yaml.h"
 #include "io/settings_yaml.h"
 #include "io/trajectory_io.h"
@@ -25,8 +31,7 @@ StageStats stats_of(const std::string& name, std::vector<double> values) {
   return s;
 }
 
-void write_tracking_csv(const fs::path& path, const RunResult& result) {
-  std::ofstream out(path);
+void write_tracking_csv(std::ostream& out, const RunResult& result) {
   out << "index,stamp,solver,features,matches,pairs_3d,inliers,refined,lost,failure,keyframe,"
          "similarity,reference_keyframe,decode_ms,features_ms,window_code_ms,match_ms,pose_ms,"
          "refine_ms,keyframe_ms,mapping_ms\n";
@@ -42,11 +47,9 @@ void write_tracking_csv(const fs::path& path, const RunResult& result) {
         << t.window_code_ms << ',' << f.match_ms << ',' << f.pose_ms << ',' << f.refine_ms << ','
         << f.keyframe_ms << ',' << t.mapping_ms << '\n';
   }
-  if (!out) throw_input_error(path.string(), "cannot write file");
 }
 
-void write_mapping_csv(const fs::path& path, const RunResult& result) {
-  std::ofstream out(path);
+void write_mapping_csv(std::ostream& out, const RunResult& result) {
   out << "keyframe,frame,new_points,culled_points,fused_points,local_ba,free_keyframes,"
          "fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,ba_ms,mapping_ms,"
          "ba_wait_ms\n";
@@ -59,10 +62,109 @@ void write_mapping_csv(const fs::path& path, const RunResult& result) {
         << ba.observations << ',' << ba.report.iterations << ',' << ba.removed_observations << ','
         << ba.report.seconds * 1000.0 << ',' << r.ms << ',' << r.ba_wait_ms << '\n';
   }
-  if (!out) throw_input_error(path.string(), "cannot write file");
+}
+
+std::string fnv1a64_hex(const std::string& text) {
+  uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+nlohmann::json status_json(const RunStart& run, const std::string& status) {
+  return {{"status", status},
+          {"version", SLAMKIT_VERSION},
+          {"settings_hash", run.settings_hash},
+          {"started", run.started}};
+}
+
+// What the signal handler writes, prepared beforehand: it may only call async-signal-safe
+// functions (open, write, rename, unlink, _exit), so nothing is formatted or allocated there.
+char g_status_path[4096];
+char g_status_temporary[4096];
+char g_interrupted_text[1024];  // run.json up to the signal number
+size_t g_interrupted_length = 0;
+
+void write_all(int fd, const char* data, size_t length) {
+  while (length > 0) {
+    const ssize_t n = ::write(fd, data, length);
+    if (n <= 0) return;
+    data += n;
+    length -= size_t(n);
+  }
+}
+
+void on_interrupt(int signal) {
+  remove_pending_temporaries();
+  const int fd = ::open(g_status_temporary, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    write_all(fd, g_interrupted_text, g_interrupted_length);
+    char digits[8];
+    int n = 0;
+    for (int s = signal; n == 0 || s > 0; s /= 10) digits[n++] = char('0' + s % 10);
+    while (n > 0) write_all(fd, &digits[--n], 1);
+    write_all(fd, "\n}\n", 3);
+    ::close(fd);
+    ::rename(g_status_temporary, g_status_path);
+  }
+  ::_exit(128 + signal);
+}
+
+void set_interrupt_handler(void (*handler)(int)) {
+  struct sigaction action {};
+  action.sa_handler = handler;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+void copy_text(char* to, size_t capacity, const std::string& text) {
+  const size_t n = std::min(text.size(), capacity - 1);
+  std::memcpy(to, text.data(), n);
+  to[n] = '\0';
 }
 
 }  // namespace
+
+RunStart begin_run_folder(const fs::path& dir, const Settings& settings) {
+  fs::create_directories(dir);
+  RunStart run{dir, fnv1a64_hex(settings_yaml_text(settings)), utc_now()};
+  std::string text = status_json(run, "interrupted").dump(2);
+  text.erase(text.find_last_not_of("}\n") + 1);  // reopened for the signal number
+  text += ",\n  \"signal\": ";
+  const fs::path path = dir / "run.json";
+  if (text.size() < sizeof g_interrupted_text && path.string().size() + 4 < sizeof g_status_path) {
+    copy_text(g_interrupted_text, sizeof g_interrupted_text, text);
+    g_interrupted_length = text.size();
+    copy_text(g_status_path, sizeof g_status_path, path.string());
+    copy_text(g_status_temporary, sizeof g_status_temporary, path.string() + ".tmp");
+    set_interrupt_handler(on_interrupt);
+  }
+  write_file_atomically(
+      path, [&](std::ostream& out) { out << status_json(run, "running").dump(2) << "\n"; });
+  return run;
+}
+
+void write_run_status(const RunStart& run, const StageTimes& t) {
+  set_interrupt_handler(SIG_DFL);  // complete now: an interrupt no longer marks the folder
+  nlohmann::json json = status_json(run, "complete");
+  json["ended"] = utc_now();
+  json["seconds"] = {{"prepare", t.prepare},     {"track", t.track},   {"local_ba", t.local_ba},
+                     {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
+                     {"total", t.total}};
+  write_file_atomically(run.dir / "run.json",
+                        [&](std::ostream& out) { out << json.dump(2) << "\n"; });
+}
 
 TimingSummary summarise_timing(const RunResult& result) {
   std::vector<double> decode, features, code, match, pose, refine, keyframe, mapping, tracking;
@@ -122,8 +224,10 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
                              " as tracked, before the back end's corrections");
   write_tum_trajectory(dir / "keyframes.txt", result.keyframe_trajectory(),
                        "slamkit keyframes of " + sequence_name);
-  write_tracking_csv(dir / "tracking.csv", result);
-  write_mapping_csv(dir / "mapping.csv", result);
+  write_file_atomically(dir / "tracking.csv",
+                        [&](std::ostream& out) { write_tracking_csv(out, result); });
+  write_file_atomically(dir / "mapping.csv",
+                        [&](std::ostream& out) { write_mapping_csv(out, result); });
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
   write_timing_json(dir, sequence_name, result);
@@ -146,10 +250,8 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   for (const StageStats& s : timing.stages)
     json["stages"][s.name] = {
         {"median_ms", s.median_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
-  const fs::path path = dir / "timing.json";
-  std::ofstream out(path);
-  out << json.dump(2) << "\n";
-  if (!out) throw_input_error(path.string(), "cannot write file");
+  write_file_atomically(dir / "timing.json",
+                        [&](std::ostream& out) { out << json.dump(2) << "\n"; });
 }
 
 }  // namespace slamkit

@@ -18,6 +18,19 @@ void write_run_outputs(const std::filesystem::path& dir, const std::string& sequ
 void write_timing_json(const std::filesystem::path& dir, const std::string& sequence_name,
                        const RunResult& result);
 
+// run.json, what readers check before trusting a run folder. begin_run_folder creates the
+// folder and writes it with status "running"; until write_run_status, SIGINT or SIGTERM
+// removes any half-written output, rewrites it as "interrupted" and ends the process with
+// 128 + signal. write_run_status, called after every other file, writes "complete": version,
+// settings hash (FNV-1a 64 of settings.yaml's text), start and end (UTC), stage seconds.
+struct RunStart {
+  std::filesystem::path dir;
+  std::string settings_hash;
+  std::string started;
+};
+RunStart begin_run_folder(const std::filesystem::path& dir, const Settings& settings);
+void write_run_status(const RunStart& run, const StageTimes& seconds);
+
 // Per-stage statistics of a run, as written to timing.json.
 struct StageStats {
   std::string name;
