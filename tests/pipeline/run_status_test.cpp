@@ -1,0 +1,98 @@
+// run.json: written first as running and last as complete, and an interrupted run leaves a
+// folder marked so, without half-written files, that readers refuse.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "core/error.h"
+#include "eval/checksum.h"
+#include "eval/metrics_json.h"
+#include "pipeline/run_output.h"
+#include "pipeline/run_pipeline.h"
+#include "pipeline_test_support.h"
+#include "support/test_data.h"
+
+namespace slamkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json read_json(const fs::path& path) {
+  return nlohmann::json::parse(test::file_text(path), nullptr, false);
+}
+
+std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.path().extension() == ".tmp") found.push_back(entry.path().string());
+  return found;
+}
+
+TEST(RunStatus, RunJsonIsRunningWhileTheRunGoesAndCompleteAfterEveryOtherFile) {
+  const fs::path dir = test::temp_dir("run_status") / "run";
+  const TumSequence seq = TumSequence::open(test::synthetic_sequence(synth::Preset::kDesk, 10));
+  const Settings settings = front_end_only(Settings{});
+  const RunStart started = begin_run_folder(dir, settings);
+  EXPECT_EQ(read_json(dir / "run.json")["status"], "running");
+  const RunResult result = track_sequence(seq, settings);
+  write_run_outputs(dir, "desk", seq.camera(), settings, result);
+  EXPECT_THROW(eval::require_complete_run(dir), InputError);
+  write_run_status(started, result.seconds);
+
+  const nlohmann::json status = read_json(dir / "run.json");
+  EXPECT_EQ(status["status"], "complete");
+  EXPECT_EQ(status["settings_hash"], eval::fnv1a64_file(dir / "settings.yaml"));
+  EXPECT_TRUE(status["started"].is_string() && status["ended"].is_string());
+  EXPECT_EQ(status["seconds"]["total"], result.seconds.total);
+  const auto last = fs::last_write_time(dir / "run.json");
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_LE(fs::last_write_time(entry.path()), last) << entry.path();
+  EXPECT_TRUE(temporaries(dir).empty());
+  EXPECT_NO_THROW(eval::require_complete_run(dir));
+}
+
+TEST(RunStatus, SigtermMidRunMarksTheFolderInterruptedAndLeavesNoTemporary) {
+  const fs::path sequence = test::synthetic_sequence(synth::Preset::kDesk, 150);
+  const fs::path dir = test::temp_dir("run_status") / "run";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(SLAMKIT_BINARY, SLAMKIT_BINARY, "run", sequence.c_str(), "--out", dir.c_str(),
+          "--threads", "1", nullptr);
+    _exit(127);
+  }
+  // Mid-run: run.json says running, then tracking goes on for a while.
+  for (int i = 0; i < 600 && !fs::exists(dir / "run.json"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  ASSERT_EQ(read_json(dir / "run.json")["status"], "running") << "the run ended too soon";
+  kill(child, SIGTERM);
+  int wait_status = 0;
+  ASSERT_EQ(waitpid(child, &wait_status, 0), child);
+  ASSERT_TRUE(WIFEXITED(wait_status));
+  EXPECT_EQ(WEXITSTATUS(wait_status), 128 + SIGTERM);
+
+  const nlohmann::json status = read_json(dir / "run.json");
+  EXPECT_EQ(status["status"], "interrupted");
+  EXPECT_EQ(status["signal"], SIGTERM);
+  EXPECT_TRUE(temporaries(dir).empty());
+  try {
+    eval::require_complete_run(dir);
+    FAIL() << "an interrupted run was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.json: the run is not complete (status "
+                                         "'interrupted')"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace slamkit
