@@ -1,6 +1,7 @@
 // slamkit run SEQ --out DIR: the whole batch (DESIGN): prepare, track with local BA, global BA,
 // re-anchor every frame, fuse the map (map.ply), write, evaluate with groundtruth.
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include "bin/command.h"
@@ -119,7 +120,8 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("sequence", args->folder, "Sequence folder (TUM layout)")->required();
   cmd->add_option("--out", args->out, "Run folder to write")->required();
   cmd->add_option("--settings", args->settings_file, "Settings YAML (defaults: SPEC's)");
-  cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)");
+  cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)")
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   add_sequence_options(cmd, args->sequence);

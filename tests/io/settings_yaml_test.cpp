@@ -158,6 +158,12 @@ TEST(SettingsYaml, CliRejectsAnOutOfRangeSettingWithOneLineAndExitTwo) {
       << output;
   EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
   EXPECT_FALSE(fs::exists(dir / "out"));
+  // --threads sets pipeline.threads: the same lower bound (a usage error, as CLI11 reports).
+  EXPECT_NE(test::run_slamkit("track " + (dir / "none").string() + " --out " +
+                                  (dir / "out").string() + " --threads -3",
+                              &output),
+            0);
+  EXPECT_NE(output.find("--threads: Value -3 not in range 0 to"), std::string::npos) << output;
 }
 
 }  // namespace
