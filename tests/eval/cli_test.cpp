@@ -235,6 +235,37 @@ TEST(EvalCli, OverflowingValuesAreRefusedAndCompareNamesTheFileItCannotUse) {
       << log;
 }
 
+// A run folder whose run.json (slamkit run/track) is not complete is refused, naming the
+// file; one made by `eval all` has no run.json and is compared as before.
+TEST(EvalCli, CompareRefusesARunFolderThatIsNotComplete) {
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  const fs::path est = write_tum(dir / "est.txt", 100, 1000.0, 0.002);
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("eval all " + quoted(gt) + " " + quoted(est) + " --out " +
+                                  quoted(dir / "run") + " --no-plot",
+                              &log),
+            0)
+      << log;
+  EXPECT_EQ(test::run_slamkit("eval compare " + quoted(dir / "run") + " --out " + quoted(dir / "c"),
+                              &log),
+            0)
+      << log;
+  std::ofstream(dir / "run" / "run.json") << R"({"status": "interrupted", "signal": 15})";
+  EXPECT_EQ(test::run_slamkit("eval compare " + quoted(dir / "run") + " --out " + quoted(dir / "c"),
+                              &log),
+            2);
+  EXPECT_NE(log.find((dir / "run" / "run.json").string() +
+                     ": the run is not complete (status 'interrupted')"),
+            std::string::npos)
+      << log;
+  std::ofstream(dir / "run" / "run.json") << R"({"status": "complete"})";
+  EXPECT_EQ(test::run_slamkit("eval compare " + quoted(dir / "run") + " --out " + quoted(dir / "c"),
+                              &log),
+            0)
+      << log;
+}
+
 // The fr1/desk frames 18-26 (0.27 s of nearly straight motion) with a 3 mm estimate: the
 // rotation about the line of the positions is not fixed, so no rotational ATE is printed.
 TEST(EvalCli, NearlyCollinearPositionsWithholdTheRotationalError) {
