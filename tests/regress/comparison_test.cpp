@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
+#include "core/error.h"
+#include "eval/regression/metrics.h"
+#include "support/test_data.h"
+
 namespace slamkit::regress {
 namespace {
 
@@ -42,6 +48,18 @@ TEST(Comparison, EveryMetricOfRunOrBaselineInReportOrder) {
   EXPECT_EQ(rows[2].verdict, Verdict::kNew);
   EXPECT_EQ(format_delta(compare_metric(*find_metric("ate_rmse"), 0.0021, 0.002, {})),
             "+0.00010 m (+5.0%)");
+}
+
+// A run folder left by an interrupted run (run.json not complete) gives no metrics: the
+// runner reports the entry as failed instead of comparing half a run.
+TEST(Comparison, RunMetricsRefuseAFolderWhoseRunIsNotComplete) {
+  const std::filesystem::path dir = test::temp_dir("regress_metrics");
+  std::ofstream(dir / "timing.json") << R"({"frames_per_second": 30})";
+  EXPECT_NO_THROW(read_run_metrics(dir));
+  std::ofstream(dir / "run.json") << R"({"status": "interrupted", "signal": 2})";
+  EXPECT_THROW(read_run_metrics(dir), InputError);
+  std::ofstream(dir / "run.json") << R"({"status": "complete"})";
+  EXPECT_NO_THROW(read_run_metrics(dir));
 }
 
 }  // namespace
