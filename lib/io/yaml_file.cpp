@@ -1,7 +1,5 @@
 #include "io/yaml_file.h"
 
-#include <fstream>
-
 #include "core/error.h"
 #include "io/atomic_file.h"
 

@@ -9,7 +9,6 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/camera_yaml.h"
 #include "io/settings_yaml.h"
