@@ -5,9 +5,8 @@
 
 namespace slamkit::eval {
 
-// FNV-1a 64-bit of the file's bytes as 16 hex digits. Hand-written (five lines) because
-// SHA-256 would need OpenSSL; FNV-1a is a published, stable hash, fine for identifying
-// files (not for security). Throws InputError when the file cannot be read.
+// FNV-1a 64-bit of the file's bytes as 16 hex digits (core/fingerprint.h). Throws InputError
+// when the file cannot be read.
 std::string fnv1a64_file(const std::filesystem::path& path);
 
 }  // namespace slamkit::eval

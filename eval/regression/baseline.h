@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "core/fingerprint.h"  // utc_now_iso for the records
 #include "eval/regression/metrics.h"
 
 namespace slamkit::regress {
@@ -28,6 +29,5 @@ void write_baseline(const std::filesystem::path& file, const Baseline& baseline)
 
 std::string slamkit_version();
 std::string machine_description();
-std::string utc_now_iso();
 
 }  // namespace slamkit::regress

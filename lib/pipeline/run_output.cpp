@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <csignal>
 #include <cstring>
-#include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "core/fingerprint.h"
 #include "io/atomic_file.h"
 #include "io/camera_yaml.h"
 #include "io/settings_yaml.h"
@@ -61,23 +61,6 @@ void write_mapping_csv(std::ostream& out, const RunResult& result) {
         << ba.observations << ',' << ba.report.iterations << ',' << ba.removed_observations << ','
         << ba.report.seconds * 1000.0 << ',' << r.ms << ',' << r.ba_wait_ms << '\n';
   }
-}
-
-std::string fnv1a64_hex(const std::string& text) {
-  uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-  return hex;
-}
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
 }
 
 nlohmann::json status_json(const RunStart& run, const std::string& status) {
@@ -137,7 +120,7 @@ void copy_text(char* to, size_t capacity, const std::string& text) {
 
 RunStart begin_run_folder(const fs::path& dir, const Settings& settings) {
   fs::create_directories(dir);
-  RunStart run{dir, fnv1a64_hex(settings_yaml_text(settings)), utc_now()};
+  RunStart run{dir, fnv1a64_hex(settings_yaml_text(settings)), utc_now_iso()};
   std::string text = status_json(run, "interrupted").dump(2);
   text.erase(text.find_last_not_of("}\n") + 1);  // reopened for the signal number
   text += ",\n  \"signal\": ";
@@ -157,7 +140,7 @@ RunStart begin_run_folder(const fs::path& dir, const Settings& settings) {
 void write_run_status(const RunStart& run, const StageTimes& t) {
   set_interrupt_handler(SIG_DFL);  // complete now: an interrupt no longer marks the folder
   nlohmann::json json = status_json(run, "complete");
-  json["ended"] = utc_now();
+  json["ended"] = utc_now_iso();
   json["seconds"] = {{"prepare", t.prepare},     {"track", t.track},   {"local_ba", t.local_ba},
                      {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
                      {"total", t.total}};
