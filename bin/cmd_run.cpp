@@ -8,7 +8,6 @@
 #include "bin/map_evaluation.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
-#include "eval/association.h"
 #include "eval/ate.h"
 #include "eval/metrics_json.h"
 #include "io/settings_yaml.h"
@@ -27,14 +26,6 @@ struct RunArgs {
   bool ascii = false;
   SequenceOptions sequence;
 };
-
-// ATE RMSE of a trajectory as the benchmark computes it, for the stage-by-stage summary.
-double ate_rmse(const Trajectory& gt, const Trajectory& estimate) {
-  const auto pairs = eval::associate(gt, estimate, eval::AssociationOptions{});
-  eval::require_enough_pairs(pairs.size(), gt, estimate, "groundtruth.txt", "the trajectory",
-                             eval::AssociationOptions{});
-  return eval::compute_ate(gt, estimate, pairs, eval::AteOptions{}).trans.rmse;
-}
 
 void print_back_end_summary(const TumSequence& seq, const Settings& settings,
                             const RunResult& result) {
@@ -61,8 +52,8 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
         settings.fusion.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
   if (seq.groundtruth() && settings.pipeline.evaluate)
     std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after local and global BA\n",
-                1000 * ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),
-                1000 * ate_rmse(*seq.groundtruth(), result.trajectory()));
+                1000 * eval::ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),
+                1000 * eval::ate_rmse(*seq.groundtruth(), result.trajectory()));
   std::printf(
       "stages      prepare %.2f s (parallel, beside tracking), track %.2f s (local BA "
       "%.2f), global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f frames/s\n",

@@ -37,7 +37,9 @@ void track(const TrackArgs& args) {
     StageProgress progress;
     result = track_sequence(seq, settings, std::ref(progress));
   }
-  write_run_outputs(args.out, seq.folder().filename().string(), seq.camera(), settings, result);
+  const std::string name = seq.folder().filename().string();
+  write_run_outputs(args.out, name, seq.camera(), settings, result);
+  write_timing_json(args.out, name, result);
   print_tracking_summary(seq, result);
   std::printf("output      %s\n", args.out.c_str());
   if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/pose.h"
+#include "eval/association.h"
 
 namespace slamkit::eval {
 
@@ -35,6 +36,14 @@ Trajectory apply_alignment(const Trajectory& est, const Alignment& alignment) {
   out.reserve(est.size());
   for (size_t i = 0; i < est.size(); ++i) out.push_back(est.stamp(i), alignment.apply(est.pose(i)));
   return out;
+}
+
+double ate_rmse(const Trajectory& gt, const Trajectory& est, const std::string& gt_name,
+                const std::string& est_name) {
+  const AssociationOptions options;
+  const std::vector<IndexPair> pairs = associate(gt, est, options);
+  require_enough_pairs(pairs.size(), gt, est, gt_name, est_name, options);
+  return compute_ate(gt, est, pairs, AteOptions{}, gt_name, est_name).trans.rmse;
 }
 
 }  // namespace slamkit::eval

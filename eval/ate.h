@@ -35,6 +35,12 @@ AteResult compute_ate(const Trajectory& gt, const Trajectory& est,
                       const std::string& gt_name = "groundtruth",
                       const std::string& est_name = "estimate");
 
+// ATE RMSE (metres) with the benchmark's defaults: associate within 0.02 s, SE(3) alignment.
+// Throws InputError (naming the files) when fewer than 2 poses match.
+double ate_rmse(const Trajectory& gt, const Trajectory& est,
+                const std::string& gt_name = "groundtruth",
+                const std::string& est_name = "estimate");
+
 // The whole estimate (matched or not) moved by the alignment, for aligned.txt.
 Trajectory apply_alignment(const Trajectory& est, const Alignment& alignment);
 

@@ -8,13 +8,13 @@
 
 namespace slamkit {
 
-int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points, const Camera& camera,
-                       const FusionGates& gates) {
+std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points,
+                                    const Camera& camera, const FusionGates& gates) {
   const Keyframe& k = map.keyframe(keyframe);
   const KeypointGrid grid(k.undistorted);
   const Eigen::Vector3d centre = k.centre();
   std::vector<int> candidates;
-  int fused = 0;
+  std::vector<int> gained;
   for (int id : points) {
     const MapPoint& p = map.point(id);
     if (p.bad || std::any_of(p.observations.begin(), p.observations.end(),
@@ -55,16 +55,16 @@ int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points, c
     const int existing = map.keyframe(keyframe).point_ids[size_t(best_keypoint)];
     if (existing >= 0 && !map.point(existing).bad) {
       // The better-observed point survives (ORB-SLAM2's Replace).
-      if (map.point(existing).num_observations() > p.num_observations())
-        map.replace_point(id, existing);
-      else
-        map.replace_point(existing, id);
+      const bool keep_existing = map.point(existing).num_observations() > p.num_observations();
+      const int survivor = keep_existing ? existing : id;
+      map.replace_point(keep_existing ? id : existing, survivor);
+      gained.push_back(survivor);
     } else {
       map.add_observation(id, keyframe, best_keypoint);
+      gained.push_back(id);
     }
-    ++fused;
   }
-  return fused;
+  return gained;
 }
 
 }  // namespace slamkit

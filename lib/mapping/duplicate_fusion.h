@@ -18,8 +18,9 @@ struct FusionGates {
   double virtual_bf = 40;  // for the depth term of the reprojection gate
 };
 
-// Projects `points` into `keyframe` and fuses them; returns how many were merged or linked.
-int fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points, const Camera& camera,
-                       const FusionGates& gates);
+// Projects `points` into `keyframe` and fuses them; returns, once per fusion, the point that
+// gained the observations (the survivor of a merge, or the point newly linked).
+std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<int>& points,
+                                    const Camera& camera, const FusionGates& gates);
 
 }  // namespace slamkit

@@ -109,22 +109,29 @@ int LocalMapper::fuse_duplicates(int keyframe) {
       if (id >= 0 && !map_.point(id).bad) ids.push_back(id);
     return ids;
   };
-  int fused = 0;
   // The new keyframe's points into each neighbour, then the neighbours' points into it.
-  for (int target : targets)
-    fused += fuse_into_keyframe(map_, target, points_of(keyframe), camera_, gates);
+  std::vector<int> gained;
+  const auto fuse = [&](int target, const std::vector<int>& points) {
+    const std::vector<int> ids = fuse_into_keyframe(map_, target, points, camera_, gates);
+    gained.insert(gained.end(), ids.begin(), ids.end());
+  };
+  for (int target : targets) fuse(target, points_of(keyframe));
   std::set<int> theirs;
   for (int target : targets)
     for (int id : points_of(target)) theirs.insert(id);
-  fused += fuse_into_keyframe(map_, keyframe, {theirs.begin(), theirs.end()}, camera_, gates);
+  fuse(keyframe, {theirs.begin(), theirs.end()});
 
-  for (int id : points_of(keyframe)) {
-    map_.update_point_descriptor(id);
-    map_.update_point_geometry(id);
-  }
+  // Of the keyframe's points, only those that gained observations changed.
+  std::vector<bool> changed(map_.points().size(), false);
+  for (int id : gained) changed[size_t(id)] = true;
+  for (int id : points_of(keyframe))
+    if (changed[size_t(id)]) {
+      map_.update_point_descriptor(id);
+      map_.update_point_geometry(id);
+    }
   map_.update_connections(keyframe);
   for (int target : targets) map_.update_connections(target);
-  return fused;
+  return int(gained.size());
 }
 
 double quasi_static_motion(const std::vector<Eigen::Isometry3d>& poses, double rotation_weight) {

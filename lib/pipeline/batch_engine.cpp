@@ -127,9 +127,11 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
                     const std::filesystem::path& ply_path, const ProgressCallback& progress) {
   if (!settings.fusion.enabled) return;
   Stopwatch watch;
+  std::vector<FusionFrame> keyframes;
+  for (const Keyframe& k : result.map.keyframes()) keyframes.push_back({k.frame_index, k.T_w_c});
   std::vector<FusionFrame> frames;
   if (settings.fusion.frame_step <= 0) {
-    for (const Keyframe& k : result.map.keyframes()) frames.push_back({k.frame_index, k.T_w_c});
+    frames = keyframes;
   } else {
     for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
       if (!result.frames[i].lost)
@@ -141,8 +143,6 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
         if (progress) progress("map", done, total);
       });
   // The keyframes' centres beside the map, so that a viewer shows both.
-  std::vector<FusionFrame> keyframes;
-  for (const Keyframe& k : result.map.keyframes()) keyframes.push_back({k.frame_index, k.T_w_c});
   write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
   result.seconds.fusion = watch.lap() / 1000.0;
 }

@@ -212,7 +212,6 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
                         [&](std::ostream& out) { write_mapping_csv(out, result); });
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
-  write_timing_json(dir, sequence_name, result);
 }
 
 void write_timing_json(const fs::path& dir, const std::string& sequence_name,

@@ -14,7 +14,7 @@ namespace slamkit {
 
 void write_run_outputs(const std::filesystem::path& dir, const std::string& sequence_name,
                        const Camera& camera, const Settings& settings, const RunResult& result);
-// timing.json alone (write_run_outputs writes it too).
+// timing.json, written after the other outputs so that it holds the time they took.
 void write_timing_json(const std::filesystem::path& dir, const std::string& sequence_name,
                        const RunResult& result);
 

@@ -19,7 +19,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
   write_run_outputs(out, sequence_name, sequence.camera(), settings, result);
   result.seconds.write = write.lap() / 1000.0;
   result.seconds.total = total.lap() / 1000.0;
-  write_timing_json(out, sequence_name, result);  // again, now with the write and total times
+  write_timing_json(out, sequence_name, result);
   return result;
 }
 

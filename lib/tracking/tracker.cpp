@@ -43,6 +43,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
   if (poses_.empty()) {  // the first frame defines the world frame and the first keyframe
     record.keyframe = true;
     inliers_.clear();
+    voted_keyframes_.clear();
   } else {
     Stopwatch watch;
     const Eigen::Isometry3d guess = predict_pose(frame.stamp);
@@ -86,23 +87,33 @@ Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
   return predict_constant_velocity(poses_[poses_.size() - 2], poses_.back(), stamp);
 }
 
-std::vector<int> Tracker::local_keyframes() const {
-  // ORB-SLAM2's UpdateLocalKeyFrames: the keyframes that observe the last frame's points,
-  // most shared first, then their best covisible neighbours, up to the setting's count.
-  const size_t limit = size_t(std::max(1, settings_.mapping.local_map_keyframes));
+std::vector<int> Tracker::keyframes_by_votes() const {
   std::map<int, int> votes;
   for (const Match& m : inliers_)
     for (const Observation& o : map_.point(m.point_id).observations) ++votes[o.keyframe];
   std::vector<std::pair<int, int>> ranked;  // (-votes, keyframe)
   for (const auto& [k, count] : votes) ranked.push_back({-count, k});
   std::sort(ranked.begin(), ranked.end());
+  std::vector<int> keyframes;
+  for (const auto& [negative_votes, k] : ranked) keyframes.push_back(k);
+  return keyframes;
+}
+
+std::vector<int> Tracker::local_keyframes() const {
+  // ORB-SLAM2's UpdateLocalKeyFrames: the keyframes that observe the last frame's points,
+  // most shared first, then their best covisible neighbours, up to the setting's count. The
+  // votes counted for the last frame stand unless a keyframe came in since (its insertion
+  // changes the observations).
+  const size_t limit = size_t(std::max(1, settings_.mapping.local_map_keyframes));
+  const std::vector<int> voted =
+      voted_at_keyframes_ == map_.keyframes().size() ? voted_keyframes_ : keyframes_by_votes();
   std::vector<int> local;
   auto add = [&](int k) {
     if (local.size() < limit && std::find(local.begin(), local.end(), k) == local.end())
       local.push_back(k);
   };
   add(int(map_.keyframes().size()) - 1);  // the latest keyframe's fresh points, always
-  for (const auto& [negative_votes, k] : ranked) add(k);
+  for (int k : voted) add(k);
   for (size_t i = 0; i < local.size() && local.size() < limit; ++i)
     for (int k : map_.best_covisible(local[i], int(limit))) add(k);
   return local;
@@ -336,14 +347,10 @@ Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
 
 void Tracker::settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record) {
   inliers_ = inliers;
-  std::map<int, int> votes;
-  for (const Match& m : inliers_) {
-    map_.count_found(m.point_id);
-    for (const Observation& o : map_.point(m.point_id).observations) ++votes[o.keyframe];
-  }
-  int best = 0;
-  for (const auto& [k, count] : votes)
-    if (count > best) best = count, reference_keyframe_ = k;
+  for (const Match& m : inliers_) map_.count_found(m.point_id);
+  voted_keyframes_ = keyframes_by_votes();
+  voted_at_keyframes_ = map_.keyframes().size();
+  if (!voted_keyframes_.empty()) reference_keyframe_ = voted_keyframes_.front();
   if (reference_keyframe_ < 0) reference_keyframe_ = int(map_.keyframes().size()) - 1;
   record.reference_keyframe = reference_keyframe_;
   record.T_ref_c = map_.keyframe(reference_keyframe_).T_c_w * record.T_w_c;

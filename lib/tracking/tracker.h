@@ -44,6 +44,8 @@ class Tracker {
   };
 
   Eigen::Isometry3d predict_pose(double stamp) const;
+  // The keyframes observing the last frame's inliers, most of them first (then lowest index).
+  std::vector<int> keyframes_by_votes() const;
   std::vector<int> local_keyframes() const;
   std::vector<Match> match_local_map(const PreparedFrame& frame,
                                      const Eigen::Isometry3d& T_w_c_guess);
@@ -67,10 +69,12 @@ class Tracker {
   Camera camera_;
   Settings settings_;
   Map& map_;
-  std::vector<Match> inliers_;   // of the last tracked frame
-  int reference_keyframe_ = -1;  // the keyframe sharing most points with the last frame
-  std::vector<size_t> point_mark_;  // per map point: last frame that listed it (local map)
-  std::vector<StampedPose> poses_;             // every tracked frame, in order
+  std::vector<Match> inliers_;        // of the last tracked frame
+  int reference_keyframe_ = -1;       // the keyframe sharing most points with the last frame
+  std::vector<int> voted_keyframes_;  // keyframes_by_votes() of the last frame...
+  size_t voted_at_keyframes_ = 0;     // ...counted when the map had this many keyframes
+  std::vector<size_t> point_mark_;    // per map point: last frame that listed it (local map)
+  std::vector<StampedPose> poses_;    // every tracked frame, in order
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment
   bool previous_lost_ = false;
