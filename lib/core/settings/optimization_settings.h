@@ -14,7 +14,7 @@ struct BaResidualSettings {
   // sigma_z = z^2 / bf. ORB-SLAM2's 40 (its TUM "Camera.bf") means 2.5 cm at 1 m, 15 times
   // the Kinect's noise (about 1.4 mm z^2, Khoshelham and Elberink 2012); (ours) 700 is that
   // noise. Measured against 40 on the real pieces: fr2/desk 6.0 -> 4.2 mm, fr1/desk 3.5 ->
-  // 3.2 mm; synthetic desk 1.1 -> 0.8 mm.
+  // 3.2 mm; synthetic desk 1.2 -> 0.8 mm.
   double virtual_bf = 700;
   double chi2_2d = 5.991;  // (ORB-SLAM2) 95% chi-square, 2 dof: outlier test and Huber delta^2
   double chi2_3d = 7.815;  // (ORB-SLAM2) 95% chi-square, 3 dof
@@ -59,9 +59,9 @@ struct GlobalBaSettings {
 struct OptimizationSettings {
   // (ours) A keyframe observing fewer map points than this does not move in BA: on a plain
   // wall (7-15 points a keyframe, tracked by dense alignment) global BA swung such keyframes
-  // by 10-16 cm (lowtexture 600: ATE 46 mm, 2.8 mm with this rule). Global BA carries them with
-  // their spanning-tree parent's correction instead (ORB-SLAM2's rule for keyframes outside its
-  // global BA); local BA holds them fixed.
+  // by centimetres (lowtexture 600: ATE 14.1 mm with 0, 2.5 mm with 100). Global BA carries them
+  // with their spanning-tree parent's correction instead (ORB-SLAM2's rule for keyframes outside
+  // its global BA); local BA holds them fixed.
   int min_keyframe_points = 100;
   BaResidualSettings residual;
   LocalBaSettings local;
