@@ -22,6 +22,7 @@ struct RunArgs {
   std::string out;
   std::string settings_file;
   int threads = -1;
+  std::optional<LostFrames> lost_frames;
   bool evaluate = true;
   bool ascii = false;
   SequenceOptions sequence;
@@ -79,6 +80,7 @@ void run(const RunArgs& args) {
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
+  if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
   if (args.ascii) settings.fusion.binary_ply = false;
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
@@ -114,6 +116,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
+  add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { run(*args); });

@@ -19,6 +19,7 @@ struct TrackArgs {
   std::string out;
   std::string settings_file;
   int threads = -1;
+  std::optional<LostFrames> lost_frames;
   bool evaluate = true;
   SequenceOptions sequence;
 };
@@ -27,6 +28,7 @@ void track(const TrackArgs& args) {
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
+  if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
   settings = front_end_only(settings);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
@@ -58,6 +60,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--threads", args->threads, "Threads for the parallel stage (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
+  add_lost_frames_option(cmd, args->lost_frames);
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { track(*args); });
 });

@@ -1,5 +1,10 @@
 #include "bin/sequence_options.h"
 
+#include <string>
+#include <vector>
+
+#include "io/settings_fields.h"
+
 namespace slamkit::cli {
 
 void add_sequence_options(CLI::App* command, SequenceOptions& options) {
@@ -17,6 +22,20 @@ void add_sequence_options(CLI::App* command, SequenceOptions& options) {
       ->capture_default_str();
   command->add_option("--offset", options.time_offset, "Time offset added to depth stamps (s)")
       ->capture_default_str();
+}
+
+void add_lost_frames_option(CLI::App* command, std::optional<LostFrames>& lost_frames) {
+  std::vector<std::string> names;
+  for (const auto& entry : kLostFramesNames) names.push_back(entry.name);
+  command
+      ->add_option_function<std::string>(
+          "--lost-frames",
+          [&lost_frames](const std::string& name) {
+            lost_frames = value_named(kLostFramesNames, name);
+          },
+          "Frames whose tracking failed: 'omit' them from the trajectory files (default, as "
+          "ORB-SLAM2) or write the motion model's pose")
+      ->check(CLI::IsMember(names));
 }
 
 }  // namespace slamkit::cli

@@ -113,6 +113,8 @@ void visit_fields(FailureSettings& s, V& v) {
   v.field("max_angular_speed_deg", s.max_angular_speed_deg, above(0));
   v.field("min_dt", s.min_dt, above(0));
   v.field("min_inliers", s.min_inliers, at_least(0));
+  v.field("trusted_inliers", s.trusted_inliers, at_least(0));
+  v.field("trusted_inlier_ratio", s.trusted_inlier_ratio, {0, 1});
 }
 
 template <class V>
@@ -207,6 +209,7 @@ void visit_fields(PipelineSettings& s, V& v) {
   v.field("threads", s.threads, at_least(0));
   v.field("chunk_frames", s.chunk_frames, at_least(1));
   v.field("evaluate", s.evaluate);
+  v.field("lost_frames", s.lost_frames);
 }
 
 template <class V>
@@ -226,7 +229,10 @@ inline constexpr EnumNames<FastType, 2> kFastTypeNames = {
     {{FastType::kFast9, "fast9"}, {FastType::kFast12, "fast12"}}};
 inline constexpr EnumNames<MatcherBackend, 2> kMatcherBackendNames = {
     {{MatcherBackend::kFlannLsh, "flann_lsh"}, {MatcherBackend::kBruteForce, "brute_force"}}};
+inline constexpr EnumNames<LostFrames, 2> kLostFramesNames = {
+    {{LostFrames::kOmit, "omit"}, {LostFrames::kMotionModel, "motion-model"}}};
 inline const auto& enum_names(FastType) { return kFastTypeNames; }
+inline const auto& enum_names(LostFrames) { return kLostFramesNames; }
 inline const auto& enum_names(MatcherBackend) { return kMatcherBackendNames; }
 
 }  // namespace slamkit

@@ -15,13 +15,16 @@ namespace slamkit {
 
 Trajectory RunResult::trajectory() const {
   Trajectory t;
-  for (const TrackedFrame& f : frames) t.push_back(f.stamp, f.T_w_c);
+  for (const TrackedFrame& f : frames)
+    if (!f.lost || lost_frames == LostFrames::kMotionModel) t.push_back(f.stamp, f.T_w_c);
   return t;
 }
 
 Trajectory RunResult::tracked_trajectory() const {
   Trajectory t;
-  for (size_t i = 0; i < frames.size(); ++i) t.push_back(frames[i].stamp, tracked_poses[i]);
+  for (size_t i = 0; i < frames.size(); ++i)
+    if (!frames[i].lost || lost_frames == LostFrames::kMotionModel)
+      t.push_back(frames[i].stamp, tracked_poses[i]);
   return t;
 }
 
@@ -50,6 +53,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   RunResult result;
   result.map = empty_map(settings);
   result.threads = thread_count(settings);
+  result.lost_frames = settings.pipeline.lost_frames;
   omp_set_num_threads(result.threads);
   const Camera& camera = sequence.camera();
   const WindowPattern pattern({camera.width, camera.height}, settings.keyframes);

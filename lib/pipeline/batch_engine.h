@@ -43,6 +43,7 @@ struct RunResult {
   FusionReport fusion;  // frames == 0 unless the map was fused
   StageTimes seconds;
   int threads = 1;
+  LostFrames lost_frames = LostFrames::kOmit;  // whether trajectories hold the lost frames
 
   Trajectory trajectory() const;          // final poses
   Trajectory tracked_trajectory() const;  // before the back end's corrections reach frames

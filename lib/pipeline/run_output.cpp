@@ -198,12 +198,15 @@ std::vector<std::string> describe_failures(const RunResult& result) {
 void write_run_outputs(const fs::path& dir, const std::string& sequence_name, const Camera& camera,
                        const Settings& settings, const RunResult& result) {
   fs::create_directories(dir);
+  const std::string lost = result.lost_frames == LostFrames::kOmit
+                               ? "lost frames omitted"
+                               : "lost frames at the motion model's pose";
   write_tum_trajectory(dir / "trajectory.txt", result.trajectory(),
-                       "slamkit trajectory of " + sequence_name + " (T_w_c, every frame)");
+                       "slamkit trajectory of " + sequence_name + " (T_w_c; " + lost + ")");
   if (settings.optimization.local.enabled || result.global_ba_run)
     write_tum_trajectory(dir / "trajectory_tracked.txt", result.tracked_trajectory(),
                          "slamkit trajectory of " + sequence_name +
-                             " as tracked, before the back end's corrections");
+                             " as tracked, before the back end's corrections; " + lost);
   write_tum_trajectory(dir / "keyframes.txt", result.keyframe_trajectory(),
                        "slamkit keyframes of " + sequence_name);
   write_file_atomically(dir / "tracking.csv",

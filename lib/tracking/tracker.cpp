@@ -58,7 +58,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     if (estimate.ok) refine_pose(frame, estimate, record);
     record.refine_ms = watch.lap();
 
-    if (estimate.ok) estimate.ok = accept(frame, estimate, record.solver);
+    if (estimate.ok) estimate.ok = accept(frame, estimate, record);
     if (!estimate.ok) {
       record.lost = true;
       record.failure = estimate.failure;
@@ -204,17 +204,20 @@ std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFram
   return best;
 }
 
-bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate, PoseSolver solver) const {
+bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate,
+                     const TrackedFrame& record) const {
   // Re-acquired against the map after a failure: the map vouches for the pose, and its jump
   // from the (motion model) pose before says nothing.
-  if (previous_lost_ && solver == PoseSolver::kSvdRansac) {
+  if (previous_lost_ && record.solver == PoseSolver::kSvdRansac) {
     if (estimate.support >= settings_.tracking.min_pairs_for_svd) return true;
     estimate.failure = "not re-acquired: too few inliers";
     return false;
   }
+  const PoseSupport support{estimate.support, record.refined, int(estimate.inliers.size()),
+                            record.matches};
   const MotionCheck check =
       check_tracking(poses_.back().T_w_c, estimate.T_w_c, frame.stamp - poses_.back().stamp,
-                     estimate.support, settings_.tracking.failure);
+                     support, settings_.tracking.failure);
   if (!check.ok())
     estimate.failure =
         check.failure == TrackingFailure::kTooFewInliers ? "too few inliers" : "implausible jump";

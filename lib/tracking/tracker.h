@@ -51,7 +51,7 @@ class Tracker {
                                      const Eigen::Isometry3d& T_w_c_guess);
   std::vector<Match> match_keyframe(const PreparedFrame& frame, const Keyframe& keyframe) const;
   std::vector<Match> match_for_relocalisation(const PreparedFrame& frame) const;
-  bool accept(const PreparedFrame& frame, PoseEstimate& estimate, PoseSolver solver) const;
+  bool accept(const PreparedFrame& frame, PoseEstimate& estimate, const TrackedFrame& record) const;
   PoseEstimate estimate_pose(const PreparedFrame& frame, const std::vector<Match>& matches,
                              const Eigen::Isometry3d& T_w_c_guess, TrackedFrame& record) const;
   PoseEstimate align_svd_ransac(const PreparedFrame& frame, const std::vector<Match>& matches,
