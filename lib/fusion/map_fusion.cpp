@@ -1,7 +1,6 @@
 #include "fusion/map_fusion.h"
 
 #include <omp.h>
-#include <pcl/filters/statistical_outlier_removal.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/point_types.h>
 
@@ -14,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "fusion/outlier_removal.h"
 #include "fusion/ply_cloud.h"
 
 namespace fs = std::filesystem;
@@ -222,12 +222,13 @@ FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame
   report.after_voxel_grid = map->size();
   merged.reset();
   if (settings.remove_outliers && !map->empty()) {
+    std::vector<Eigen::Vector3f> positions;
+    positions.reserve(map->size());
+    for (const pcl::PointXYZRGB& p : *map) positions.push_back(p.getVector3fMap());
     auto inliers = std::make_shared<Cloud>();
-    pcl::StatisticalOutlierRemoval<pcl::PointXYZRGB> filter;
-    filter.setMeanK(settings.outlier_neighbours);
-    filter.setStddevMulThresh(settings.outlier_std_ratio);
-    filter.setInputCloud(map);
-    filter.filter(*inliers);
+    for (size_t i : statistical_inliers(positions, settings.outlier_neighbours,
+                                        settings.outlier_std_ratio))
+      inliers->push_back((*map)[i]);
     held.add(inliers->size());
     map = inliers;
   }
