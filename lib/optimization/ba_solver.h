@@ -12,6 +12,7 @@
 #include "core/stopwatch.h"
 #include "optimization/ba_residual.h"
 #include "optimization/bundle_adjustment.h"
+#include "optimization/motion_ba_objective.h"
 
 namespace slamkit {
 
@@ -53,6 +54,8 @@ class BaSolver {
   const double* rotation(int pose) const { return &parameters_[7 * pose]; }
   const double* translation(int pose) const { return &parameters_[7 * pose + 4]; }
   const double* point(int index) const { return &parameters_[7 * num_poses_ + 3 * index]; }
+  // run() with the points held: every free pose on its own.
+  bool run_poses_alone(int iterations, bool robust);
   // The observation's chi2 at the current parameters; false when it cannot be evaluated.
   bool chi2(int observation, double& value) const;
 
@@ -66,6 +69,7 @@ class BaSolver {
   std::vector<double> parameters_;
   std::vector<std::unique_ptr<BaResidual>> residuals_;
   std::vector<bool> inlier_;
+  BaIntrinsics intrinsics_;
   BaResidualSettings settings_;
   // Shared by every residual block and Problem: the Problems do not take ownership.
   ceres::HuberLoss huber_2d_;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "tracking/motion_ba_objective.h"
-#include "tracking/reprojection_residual.h"
+#include "optimization/motion_ba_objective.h"
+#include "optimization/reprojection_residual.h"
 
 namespace slamkit {
 namespace {

@@ -1,4 +1,4 @@
-#include "tracking/reprojection_residual.h"
+#include "optimization/reprojection_residual.h"
 
 namespace slamkit {
 

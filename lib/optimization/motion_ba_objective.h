@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "tracking/reprojection_residual.h"
+#include "optimization/reprojection_residual.h"
 
 namespace slamkit {
 

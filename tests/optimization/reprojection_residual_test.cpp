@@ -1,4 +1,4 @@
-#include "tracking/reprojection_residual.h"
+#include "optimization/reprojection_residual.h"
 
 #include <ceres/rotation.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "tracking/motion_ba_objective.h"
+#include "optimization/motion_ba_objective.h"
 
 namespace slamkit {
 namespace {

@@ -1,4 +1,4 @@
-#include "tracking/motion_ba_objective.h"
+#include "optimization/motion_ba_objective.h"
 
 #include <ceres/rotation.h>
 
