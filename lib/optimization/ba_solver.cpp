@@ -17,11 +17,13 @@ namespace {
 // too; stating it keeps the reduced system on the poses).
 constexpr int kEliminatedGroup = 0;
 constexpr int kReducedGroup = 1;
-// Up to this many free poses the reduced camera system (6 per pose) is factorised densely:
-// for a local window that costs well under a millisecond, less than SPARSE_SCHUR's symbolic
-// analysis at every Solve (measured: 2.6 against 8-10 ms of preprocessing per Solve on the
-// 20-keyframe window).
-constexpr int kMaxDenseSchurPoses = 30;
+// Up to this many free poses the reduced camera system (6 per pose) is factorised densely.
+// In a room every keyframe sees most others, so that system is nearly dense anyway. Measured:
+// a local window's costs well under a millisecond, less than SPARSE_SCHUR's symbolic analysis
+// (2.6 against 8-10 ms per Solve); a global BA iteration on synthetic loop 600 (96 keyframes)
+// 0.08 s against 0.19 s by ITERATIVE_SCHUR, desk 600 (187) 0.25 against 0.29 s, but desk 2000
+// (627) 2.6 against 2.1 s, where the dense Schur complement's size (n^2) takes over.
+constexpr int kMaxDenseSchurPoses = 300;
 // The scheduled iterations (as ORB-SLAM2's g2o runs them) unless the solve has converged to
 // rounding: Ceres' default relative cost change of 1e-6 ended the whole-map BA after 4 of
 // its 20 iterations with 15% more pose error; 1e-10 stops only where nothing moves any more
@@ -150,9 +152,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
 
   ceres::Solver::Options options = solver_options(iterations);
   // Larger problems: conjugate gradients on the reduced system, preconditioned by its
-  // diagonal blocks. In a room every keyframe sees most others, so the reduced system is
-  // nearly dense and a sparse Cholesky of it dominates: on synthetic desk 600 (189 keyframes,
-  // 13,500 points) global BA took 7.5 s with SPARSE_SCHUR, 4.4 s with this, same ATE.
+  // diagonal blocks; a sparse Cholesky of the nearly dense system was slower still (synthetic
+  // desk 600, 189 keyframes: 7.5 s with SPARSE_SCHUR, 4.4 s with this, same ATE).
   options.linear_solver_type =
       free_poses <= kMaxDenseSchurPoses ? ceres::DENSE_SCHUR : ceres::ITERATIVE_SCHUR;
   options.preconditioner_type = ceres::SCHUR_JACOBI;
