@@ -23,9 +23,9 @@ namespace {
 
 using Cloud = pcl::PointCloud<pcl::PointXYZRGB>;
 
-// The sampled raw pixels and their ideal-pinhole rays (x/z, y/z), computed once per run.
+// The sampled raw pixels' ideal-pinhole rays (x/z, y/z), in sample_for_fusion's order,
+// computed once per run.
 struct PixelGrid {
-  std::vector<cv::Point> pixels;
   std::vector<Eigen::Vector2d> rays;
 };
 
@@ -33,10 +33,7 @@ PixelGrid make_pixel_grid(const Camera& camera, int stride) {
   PixelGrid grid;
   std::vector<Eigen::Vector2d> raw;
   for (int v = 0; v < camera.height; v += stride)
-    for (int u = 0; u < camera.width; u += stride) {
-      grid.pixels.emplace_back(u, v);
-      raw.emplace_back(u, v);
-    }
+    for (int u = 0; u < camera.width; u += stride) raw.emplace_back(u, v);
   const std::vector<Eigen::Vector2d> ideal =
       camera.distortion.is_zero() ? raw : camera.undistort_pixels(raw);
   grid.rays.reserve(ideal.size());
@@ -45,18 +42,17 @@ PixelGrid make_pixel_grid(const Camera& camera, int stride) {
   return grid;
 }
 
-// Appends the frame's valid pixels, in world coordinates, to `cloud`; returns how many.
-size_t back_project(const RgbdFrame& frame, const PixelGrid& grid, const Eigen::Isometry3d& T_w_c,
-                    double max_depth, Cloud& cloud) {
+// Appends the frame's valid samples, in world coordinates, to `cloud`; returns how many.
+size_t back_project(const FusionSamples& frame, const PixelGrid& grid,
+                    const Eigen::Isometry3d& T_w_c, double max_depth, Cloud& cloud) {
   const Eigen::Matrix3d R = T_w_c.linear();
   const Eigen::Vector3d t = T_w_c.translation();
   const size_t before = cloud.size();
-  for (size_t i = 0; i < grid.pixels.size(); ++i) {
-    const cv::Point& px = grid.pixels[i];
-    const double z = frame.depth.at<float>(px);
+  for (size_t i = 0; i < grid.rays.size(); ++i) {
+    const double z = frame.depth[i];
     if (!(z > 0 && z <= max_depth)) continue;
     const Eigen::Vector3d p_c(grid.rays[i].x() * z, grid.rays[i].y() * z, z);
-    const cv::Vec3b& bgr = frame.rgb.at<cv::Vec3b>(px);
+    const cv::Vec3b& bgr = frame.bgr[i];
     pcl::PointXYZRGB p;
     p.getVector3fMap() = (R * p_c + t).cast<float>();
     p.r = bgr[2];
@@ -137,6 +133,20 @@ class PointCount {
 
 }  // namespace
 
+FusionSamples sample_for_fusion(const cv::Mat& rgb, const cv::Mat& depth, int pixel_stride) {
+  FusionSamples samples;
+  const size_t per_row = size_t((depth.cols + pixel_stride - 1) / pixel_stride);
+  const size_t rows = size_t((depth.rows + pixel_stride - 1) / pixel_stride);
+  samples.depth.reserve(per_row * rows);
+  samples.bgr.reserve(per_row * rows);
+  for (int v = 0; v < depth.rows; v += pixel_stride)
+    for (int u = 0; u < depth.cols; u += pixel_stride) {
+      samples.depth.push_back(depth.at<float>(v, u));
+      samples.bgr.push_back(rgb.at<cv::Vec3b>(v, u));
+    }
+  return samples;
+}
+
 FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame>& frames,
                       const FusionSettings& settings, const fs::path& ply_path,
                       const std::function<void(size_t, size_t)>& progress) {
@@ -155,7 +165,7 @@ FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame
   const size_t batches = (frames.size() + batch_size - 1) / batch_size;
   // Re-voxelising the merged cloud when it has doubled keeps it under about twice the map's
   // voxel count at an amortised cost of one pass per doubling.
-  const size_t batch_capacity = batch_size * grid.pixels.size();
+  const size_t batch_capacity = batch_size * grid.rays.size();
   size_t revoxelise_at = 2 * batch_capacity;
 
   FusionReport report;
@@ -179,11 +189,19 @@ FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame
     if (b < first_failed) {
       auto raw = std::make_shared<Cloud>();
       try {  // exceptions must not escape an OpenMP region
-        raw->reserve((last - first) * grid.pixels.size());
+        raw->reserve((last - first) * grid.rays.size());
         held.add(raw->points.capacity());
-        for (size_t i = first; i < last; ++i)
-          batch_raw += back_project(sequence.load(frames[i].index), grid, frames[i].T_w_c,
-                                    settings.max_depth, *raw);
+        for (size_t i = first; i < last; ++i) {
+          const FusionFrame& f = frames[i];
+          if (f.samples) {
+            batch_raw += back_project(*f.samples, grid, f.T_w_c, settings.max_depth, *raw);
+          } else {
+            const RgbdFrame frame = sequence.load(f.index);
+            batch_raw +=
+                back_project(sample_for_fusion(frame.rgb, frame.depth, settings.pixel_stride),
+                             grid, f.T_w_c, settings.max_depth, *raw);
+          }
+        }
         voxels = voxel_grid(raw, leaf);
         held.add(voxels->size());
       } catch (const std::exception& e) {

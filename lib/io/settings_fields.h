@@ -195,6 +195,7 @@ void visit_fields(FusionSettings& s, V& v) {
   v.field("enabled", s.enabled);
   v.field("frame_step", s.frame_step, at_least(0));
   v.field("pixel_stride", s.pixel_stride, at_least(1));
+  v.field("keyframe_cache_mb", s.keyframe_cache_mb, at_least(0));
   v.field("max_depth", s.max_depth, above(0));
   v.field("voxel_size", s.voxel_size, above(0));
   v.field("batch_frames", s.batch_frames, at_least(1));

@@ -74,6 +74,9 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   std::future<std::pair<std::vector<PreparedFrame>, double>> next;
   if (sequence.size() > 0) next = std::async(policy, prepare, size_t(0));
   size_t last_keyframe_frame = 0;
+  const bool keep_samples = settings.fusion.enabled && settings.fusion.frame_step <= 0;
+  size_t cached_bytes = 0;
+  const size_t cache_limit = size_t(settings.fusion.keyframe_cache_mb) << 20;
   for (size_t begin = 0; begin < sequence.size(); begin += chunk) {
     auto [frames, prepare_seconds] = next.get();
     result.seconds.prepare += prepare_seconds;
@@ -90,6 +93,13 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
             quasi_static_motion(since_keyframe, settings.optimization.local.motion_rotation_weight);
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
+        std::shared_ptr<const FusionSamples> samples;
+        if (keep_samples && cached_bytes < cache_limit) {
+          samples = std::make_shared<const FusionSamples>(
+              sample_for_fusion(frame.rgb, frame.depth, settings.fusion.pixel_stride));
+          cached_bytes += samples->bytes();
+        }
+        result.keyframe_samples.push_back(std::move(samples));
         record.T_ref_c = Eigen::Isometry3d::Identity();
         timing.mapping_ms = mapper.reports().back().ms;
         last_keyframe_frame = result.frames.size();
@@ -132,20 +142,25 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
   if (!settings.fusion.enabled) return;
   Stopwatch watch;
   std::vector<FusionFrame> keyframes;
-  for (const Keyframe& k : result.map.keyframes()) keyframes.push_back({k.frame_index, k.T_w_c});
+  for (size_t k = 0; k < result.map.keyframes().size(); ++k) {
+    const Keyframe& keyframe = result.map.keyframe(int(k));
+    keyframes.push_back({keyframe.frame_index, keyframe.T_w_c,
+                         k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});
+  }
   std::vector<FusionFrame> frames;
   if (settings.fusion.frame_step <= 0) {
     frames = keyframes;
   } else {
     for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
       if (!result.frames[i].lost)
-        frames.push_back({result.frames[i].index, result.frames[i].T_w_c});
+        frames.push_back({result.frames[i].index, result.frames[i].T_w_c, nullptr});
   }
   if (frames.empty()) return;
   result.fusion =
       fuse_map(sequence, frames, settings.fusion, ply_path, [&](size_t done, size_t total) {
         if (progress) progress("map", done, total);
       });
+  result.keyframe_samples.clear();  // freed with `keyframes` and `frames` at the return
   // The keyframes' centres beside the map, so that a viewer shows both.
   write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
   result.seconds.fusion = watch.lap() / 1000.0;

@@ -38,6 +38,9 @@ struct RunResult {
   std::vector<Eigen::Isometry3d> tracked_poses;  // as tracking produced them, per frame
   std::vector<MappingReport> keyframe_reports;   // one per keyframe
   Map map;
+  // Per keyframe, its samples for the map's fusion while within fusion.keyframe_cache_mb
+  // (null beyond it, or without fusion).
+  std::vector<std::shared_ptr<const FusionSamples>> keyframe_samples;
   MapAdjustment global_ba;  // empty unless the global BA ran
   bool global_ba_run = false;
   FusionReport fusion;  // frames == 0 unless the map was fused

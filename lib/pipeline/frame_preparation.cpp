@@ -21,6 +21,7 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
       out.index = frame.index;
       out.stamp = frame.stamp;
       out.depth = frame.depth;
+      out.rgb = frame.rgb;
       out.features = extract_orb(frame.rgb, sequence.camera(), settings.orb);
       out.keypoint_depths = keypoint_depths(out.features, frame.depth);
       out.features_ms = watch.lap();

@@ -12,6 +12,7 @@ struct PreparedFrame {
   size_t index = 0;
   double stamp = 0;
   cv::Mat depth;  // CV_32F metres as recorded (registered to colour, raw lens geometry)
+  cv::Mat rgb;    // CV_8UC3 BGR, for the map's fusion should the frame become a keyframe
   FrameFeatures features;
   std::vector<float> keypoint_depths;  // metres per keypoint, 0 = none
   WindowCode window_code;

@@ -67,7 +67,7 @@ std::vector<FusionFrame> groundtruth_frames(const TumSequence& seq, size_t step 
   for (size_t i = 0; i < seq.size(); i += step) {
     const auto k = seq.groundtruth()->nearest(seq.stamp(i), 0.0);
     EXPECT_TRUE(k) << "frame " << i;
-    frames.push_back({i, (*seq.groundtruth())[*k].T_w_c});
+    frames.push_back({i, (*seq.groundtruth())[*k].T_w_c, nullptr});
   }
   return frames;
 }
@@ -265,6 +265,22 @@ TEST(MapFusion, SameBytesAtOneAndTwoThreads) {
   EXPECT_TRUE(file_bytes(dir / "one.ply") == file_bytes(dir / "two.ply"));
 }
 
+TEST(MapFusion, KeptSamplesGiveTheSameBytesAsLoadingAgain) {
+  const fs::path dir = test::temp_dir("samples");
+  FusionSettings settings;
+  settings.pixel_stride = 3;
+  std::vector<FusionFrame> frames = groundtruth_frames(sequence());
+  fuse_map(sequence(), frames, settings, dir / "loaded.ply");
+  for (size_t i = 0; i < frames.size(); i += 2) {  // half of them from samples, as tracking keeps
+    const RgbdFrame frame = sequence().load(frames[i].index);
+    frames[i].samples = std::make_shared<const FusionSamples>(
+        sample_for_fusion(frame.rgb, frame.depth, settings.pixel_stride));
+    EXPECT_EQ(frames[i].samples->depth.size(), size_t((640 + 2) / 3 * ((480 + 2) / 3)));
+  }
+  fuse_map(sequence(), frames, settings, dir / "sampled.ply");
+  EXPECT_TRUE(file_bytes(dir / "loaded.ply") == file_bytes(dir / "sampled.ply"));
+}
+
 TEST(MapFusion, GroundtruthPosesGiveAnAccurateAndCompleteMap) {
   const fs::path dir = test::temp_dir("geometry");
   const FusionSettings settings;  // the defaults: stride 2, 1 cm voxels, 3 m
@@ -362,7 +378,7 @@ TEST(MapFusion, BadInputIsAnInputErrorNamingTheFile) {
     return "no error";
   };
   // A frame index out of range names the sequence.
-  std::string message = error_of(sequence(), {{size_t(kFrames), {}}}, dir / "map.ply");
+  std::string message = error_of(sequence(), {{size_t(kFrames), {}, nullptr}}, dir / "map.ply");
   EXPECT_NE(message.find(rendered_sequence().string()), std::string::npos) << message;
   EXPECT_NE(message.find("out of range"), std::string::npos) << message;
 
