@@ -13,6 +13,7 @@ class Fnv1a64 {
  public:
   void add(const char* data, size_t size);
   std::string hex() const;  // 16 hex digits
+  uint64_t value() const { return hash_; }
 
  private:
   uint64_t hash_ = 0xcbf29ce484222325ull;  // FNV offset basis

@@ -206,6 +206,16 @@ void visit_fields(FusionSettings& s, V& v) {
 }
 
 template <class V>
+void visit_fields(VocabularySettings& s, V& v) {
+  v.field("branching", s.branching, {2, 255});
+  v.field("depth", s.depth, {1, 10});
+  v.field("iterations", s.iterations, {1, 1000});
+  v.field("seed", s.seed);
+  v.field("frame_step", s.frame_step, {1, 100000});
+  v.field("direct_index_level", s.direct_index_level, {0, 10});
+}
+
+template <class V>
 void visit_fields(PipelineSettings& s, V& v) {
   v.field("threads", s.threads, at_least(0));
   v.field("chunk_frames", s.chunk_frames, at_least(1));
@@ -222,6 +232,7 @@ void visit_fields(Settings& s, V& v) {
   v.section("mapping", s.mapping);
   v.section("optimization", s.optimization);
   v.section("map", s.fusion);
+  v.section("vocabulary", s.vocabulary);
   v.section("pipeline", s.pipeline);
 }
 

@@ -9,6 +9,7 @@
 #include "core/settings/orb_settings.h"
 #include "core/settings/pipeline_settings.h"
 #include "core/settings/tracking_settings.h"
+#include "core/settings/vocabulary_settings.h"
 
 namespace slamkit {
 
@@ -20,6 +21,7 @@ struct Settings {
   MappingSettings mapping;
   OptimizationSettings optimization;
   FusionSettings fusion;
+  VocabularySettings vocabulary;
   PipelineSettings pipeline;
 };
 
