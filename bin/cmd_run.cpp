@@ -11,6 +11,7 @@
 #include "eval/ate.h"
 #include "eval/metrics_json.h"
 #include "io/settings_yaml.h"
+#include "loop/vocabulary_file.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 
@@ -25,6 +26,8 @@ struct RunArgs {
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
   bool ascii = false;
+  bool loops = true;
+  std::string vocabulary_file;
   SequenceOptions sequence;
 };
 
@@ -40,6 +43,14 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
               result.map.num_good_points());
   std::printf("local BA    %d of %zu keyframes, %d outlier observations removed, %.2f s\n",
               local_runs, result.keyframe_reports.size(), removed, t.local_ba);
+  const LoopPassReport& lp = result.loop_pass;
+  if (lp.ran) {
+    int verified = 0;
+    for (const LoopDecision& d : lp.decisions) verified += d.verified;
+    std::printf("loops       %zu accepted of %d candidates verified (%zu judged, loops.csv); "
+                "vocabulary %zu words; %.2f s\n",
+                lp.loops.size(), verified, lp.decisions.size(), lp.vocabulary_words, t.loops);
+  }
   if (result.global_ba_run)
     std::printf("global BA   %d keyframes, %d points, %d iterations, %d outliers removed, %.2f s\n",
                 result.global_ba.free_keyframes + result.global_ba.fixed_keyframes,
@@ -57,8 +68,9 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
                 1000 * eval::ate_rmse(*seq.groundtruth(), result.trajectory()));
   std::printf(
       "stages      prepare %.2f s (parallel, beside tracking), track %.2f s (local BA "
-      "%.2f), global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f frames/s\n",
-      t.prepare, t.track, t.local_ba, t.global_ba, t.fusion, t.write, t.total,
+      "%.2f), loops %.2f, global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f "
+      "frames/s\n",
+      t.prepare, t.track, t.local_ba, t.loops, t.global_ba, t.fusion, t.write, t.total,
       double(result.frames.size()) / t.total);
 }
 
@@ -83,6 +95,9 @@ void run(const RunArgs& args) {
   if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
   if (args.ascii) settings.fusion.binary_ply = false;
+  if (!args.loops) settings.loop.enabled = false;
+  std::optional<Vocabulary> vocabulary;
+  if (!args.vocabulary_file.empty()) vocabulary = load_vocabulary(args.vocabulary_file);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
 
   const RunStart started = begin_run_folder(args.out, settings);
@@ -90,7 +105,8 @@ void run(const RunArgs& args) {
   {
     StageProgress progress;
     result =
-        run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress));
+        run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress),
+                  vocabulary ? &*vocabulary : nullptr);
   }
   print_tracking_summary(seq, result);
   print_back_end_summary(seq, settings, result);
@@ -118,6 +134,10 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
+  cmd->add_flag("!--no-loops", args->loops, "Skip the loop pass (place recognition, pose graph)");
+  cmd->add_option("--vocabulary", args->vocabulary_file,
+                  "Vocabulary file (slamkit vocab train, or ORB-SLAM2's ORBvoc.txt); default: "
+                  "one trained on the run's keyframes");
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { run(*args); });
 });

@@ -191,6 +191,21 @@ void visit_fields(OptimizationSettings& s, V& v) {
 }
 
 template <class V>
+void visit_fields(LoopSettings& s, V& v) {
+  v.field("enabled", s.enabled);
+  v.field("train_on_sequence", s.train_on_sequence);
+  v.field("recent_keyframes", s.recent_keyframes, at_least(0));
+  v.field("min_consistent_neighbours", s.min_consistent_neighbours, at_least(0));
+  v.field("consistency_neighbours", s.consistency_neighbours, at_least(1));
+  v.field("max_verified", s.max_verified, at_least(1));
+  v.field("min_matches", s.min_matches, at_least(3));
+  v.field("min_inliers", s.min_inliers, at_least(3));
+  v.field("max_pose_error", s.max_pose_error, above(0));
+  v.field("essential_min_weight", s.essential_min_weight, at_least(1));
+  v.field("correction_iterations", s.correction_iterations, at_least(1));
+}
+
+template <class V>
 void visit_fields(FusionSettings& s, V& v) {
   v.field("enabled", s.enabled);
   v.field("frame_step", s.frame_step, at_least(0));
@@ -231,6 +246,7 @@ void visit_fields(Settings& s, V& v) {
   v.section("keyframes", s.keyframes);
   v.section("mapping", s.mapping);
   v.section("optimization", s.optimization);
+  v.section("loop", s.loop);
   v.section("map", s.fusion);
   v.section("vocabulary", s.vocabulary);
   v.section("pipeline", s.pipeline);

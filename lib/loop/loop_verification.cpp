@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "features/descriptor_matcher.h"
 #include "tracking/icp_svd_ransac.h"
 
 namespace slamkit {
@@ -16,35 +15,24 @@ std::string fewer_than(int count, const char* what, int minimum) {
 
 }  // namespace
 
-LoopVerification verify_loop(const Map& map, int keyframe, int candidate, const Camera& camera,
-                             const MatcherSettings& matcher, const RansacSettings& ransac,
-                             const LoopCheckSettings& settings) {
+LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
+                             const std::vector<KeypointPair>& matches, const Camera& camera,
+                             const RansacSettings& ransac, const LoopSettings& settings) {
   const Keyframe& query = map.keyframe(keyframe);
   const Keyframe& other = map.keyframe(candidate);
   LoopVerification result;
   result.T_keyframe_candidate_estimated = query.T_c_w * other.T_w_c;
 
-  // The candidate's keypoints that observe a good map point, as a descriptor matrix.
-  std::vector<int> candidate_keypoints;
-  for (size_t i = 0; i < other.point_ids.size(); ++i) {
-    const int id = other.point_ids[i];
-    if (id >= 0 && !map.point(id).bad) candidate_keypoints.push_back(int(i));
-  }
-  cv::Mat candidate_descriptors(int(candidate_keypoints.size()), other.descriptors.cols, CV_8U);
-  for (size_t r = 0; r < candidate_keypoints.size(); ++r)
-    other.descriptors.row(candidate_keypoints[r]).copyTo(candidate_descriptors.row(int(r)));
-
   // Pairs: the candidate's map point in the candidate's camera, the keyframe's keypoint
   // back-projected from its depth.
   std::vector<Eigen::Vector3d> q_candidate, q_keyframe;
-  if (!candidate_descriptors.empty() && !query.descriptors.empty())
-    for (const cv::DMatch& m : match_descriptors(query.descriptors, candidate_descriptors, matcher)) {
-      const float depth = query.depths[size_t(m.queryIdx)];
-      if (depth <= 0) continue;
-      const int point = other.point_ids[size_t(candidate_keypoints[size_t(m.trainIdx)])];
-      q_candidate.push_back(other.T_c_w * map.point(point).p_w);
-      q_keyframe.push_back(camera.back_project(query.undistorted[size_t(m.queryIdx)], depth));
-    }
+  for (const KeypointPair& m : matches) {
+    const float depth = query.depths[size_t(m.keyframe_keypoint)];
+    const int point = other.point_ids[size_t(m.candidate_keypoint)];
+    if (depth <= 0 || point < 0 || map.point(point).bad) continue;
+    q_candidate.push_back(other.T_c_w * map.point(point).p_w);
+    q_keyframe.push_back(camera.back_project(query.undistorted[size_t(m.keyframe_keypoint)], depth));
+  }
   result.matches = int(q_candidate.size());
   if (result.matches < settings.min_matches) {
     result.reason = fewer_than(result.matches, "matches", settings.min_matches);

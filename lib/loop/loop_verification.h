@@ -1,6 +1,6 @@
 #pragma once
 // The geometric checks a loop candidate must pass (SPEC section 5, the paper's numbers): ORB
-// matches between the keyframe and the candidate's map points (fewer than 50: no loop), their
+// matches of the keyframe with the candidate's map points (fewer than 50: no loop), their
 // relative pose by RANSAC-SVD on the 3D-3D pairs (the tracker's solver), then that pose against
 // the current estimate: a loop only if they differ by less than kappa = 1 m, which rejects
 // places that look alike but are elsewhere. Every number is reported so that loops.csv can
@@ -8,21 +8,23 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include <vector>
+
 #include "core/camera.h"
-#include "core/settings/matcher_settings.h"
+#include "core/settings/loop_settings.h"
 #include "core/settings/tracking_settings.h"
 #include "map/map.h"
 
 namespace slamkit {
 
-struct LoopCheckSettings {
-  int min_matches = 50;        // (paper) fewer ORB matches with the candidate: no loop
-  int min_inliers = 20;        // (ORB-SLAM2) RANSAC inliers of the relative pose
-  double max_pose_error = 1.0;  // (paper) kappa, metres: measured against estimated pose
+// A descriptor match between a keypoint of the keyframe and one of the candidate.
+struct KeypointPair {
+  int keyframe_keypoint;
+  int candidate_keypoint;
 };
 
 struct LoopVerification {
-  int matches = 0;  // descriptor matches with the candidate's map points, both with 3D
+  int matches = 0;  // matches usable in 3D: depth at the keyframe's, a map point at the other
   int inliers = 0;
   // The candidate's pose in the keyframe's frame: measured (valid when inliers were found) and
   // as the map currently has it; pose_error is the distance between their translations.
@@ -33,9 +35,10 @@ struct LoopVerification {
   std::string reason;  // why not accepted ("" when accepted)
 };
 
-// Checks the candidate `candidate` for a loop with `keyframe` (both keyframes of `map`).
-LoopVerification verify_loop(const Map& map, int keyframe, int candidate, const Camera& camera,
-                             const MatcherSettings& matcher, const RansacSettings& ransac,
-                             const LoopCheckSettings& settings);
+// Checks the candidate `candidate` for a loop with `keyframe` (both keyframes of `map`), given
+// their descriptor matches (settings: min_matches, min_inliers, max_pose_error).
+LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
+                             const std::vector<KeypointPair>& matches, const Camera& camera,
+                             const RansacSettings& ransac, const LoopSettings& settings);
 
 }  // namespace slamkit

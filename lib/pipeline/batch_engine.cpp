@@ -123,6 +123,13 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   return result;
 }
 
+void close_loops_of(RunResult& result, const Camera& camera, const Settings& settings,
+                    const Vocabulary* vocabulary) {
+  Stopwatch watch;
+  result.loop_pass = close_loops(result.map, camera, settings, vocabulary);
+  result.seconds.loops = watch.lap() / 1000.0;
+}
+
 void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings) {
   if (!settings.optimization.global.enabled || result.map.keyframes().size() < 2) return;
   Stopwatch watch;

@@ -10,6 +10,7 @@
 #include "core/trajectory.h"
 #include "fusion/map_fusion.h"
 #include "io/tum_sequence.h"
+#include "loop/loop_pass.h"
 #include "map/map.h"
 #include "mapping/local_mapper.h"
 #include "tracking/tracked_frame.h"
@@ -26,6 +27,7 @@ struct StageTimes {
   double prepare = 0;   // parallel stage, summed over chunks (overlaps tracking)
   double track = 0;     // tracking and mapping, local BA included
   double local_ba = 0;  // local BA solving, beside tracking (or inside it with one thread)
+  double loops = 0;     // the loop pass: vocabulary, detection, correction
   double global_ba = 0;
   double fusion = 0;
   double write = 0;
@@ -41,7 +43,8 @@ struct RunResult {
   // Per keyframe, its samples for the map's fusion while within fusion.keyframe_cache_mb
   // (null beyond it, or without fusion).
   std::vector<std::shared_ptr<const FusionSamples>> keyframe_samples;
-  MapAdjustment global_ba;  // empty unless the global BA ran
+  LoopPassReport loop_pass;  // ran = false unless the loop pass ran
+  MapAdjustment global_ba;   // empty unless the global BA ran
   bool global_ba_run = false;
   FusionReport fusion;  // frames == 0 unless the map was fused
   StageTimes seconds;
@@ -62,6 +65,11 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
                          const ProgressCallback& progress = {});
 
 // Global BA over every keyframe and point (keyframe 0 fixed).
+// The loop pass (SPEC section 5) on the tracked map: `vocabulary` null trains one on the
+// keyframes (settings.loop). Keyframe poses and points move; the frames follow at reanchor.
+void close_loops_of(RunResult& result, const Camera& camera, const Settings& settings,
+                    const Vocabulary* vocabulary);
+
 void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings);
 
 // Every frame takes its reference keyframe's final pose composed with its pose relative to

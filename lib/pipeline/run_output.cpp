@@ -63,6 +63,22 @@ void write_mapping_csv(std::ostream& out, const RunResult& result) {
   }
 }
 
+nlohmann::json stage_seconds_json(const StageTimes& t) {
+  return {{"prepare", t.prepare}, {"track", t.track},   {"local_ba", t.local_ba},
+          {"loops", t.loops},     {"global_ba", t.global_ba}, {"fusion", t.fusion},
+          {"write", t.write},     {"total", t.total}};
+}
+
+void write_loops_csv(std::ostream& out, const LoopPassReport& loops) {
+  out << "keyframe,candidate,score,min_score,consistent_neighbours,verified,matches,inliers,"
+         "pose_error_m,accepted,reason\n";
+  for (const LoopDecision& d : loops.decisions)
+    out << d.keyframe << ',' << d.candidate << ',' << d.score << ',' << d.min_score << ','
+        << d.consistent << ',' << d.verified << ',' << d.check.matches << ','
+        << d.check.inliers << ',' << d.check.pose_error << ',' << d.check.accepted << ",\""
+        << d.check.reason << "\"\n";
+}
+
 nlohmann::json status_json(const RunStart& run, const std::string& status) {
   return {{"status", status},
           {"version", SLAMKIT_VERSION},
@@ -141,9 +157,7 @@ void write_run_status(const RunStart& run, const StageTimes& t) {
   set_interrupt_handler(SIG_DFL);  // complete now: an interrupt no longer marks the folder
   nlohmann::json json = status_json(run, "complete");
   json["ended"] = utc_now_iso();
-  json["seconds"] = {{"prepare", t.prepare},     {"track", t.track},   {"local_ba", t.local_ba},
-                     {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
-                     {"total", t.total}};
+  json["seconds"] = stage_seconds_json(t);
   write_file_atomically(run.dir / "run.json",
                         [&](std::ostream& out) { out << json.dump(2) << "\n"; });
 }
@@ -213,6 +227,9 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
                         [&](std::ostream& out) { write_tracking_csv(out, result); });
   write_file_atomically(dir / "mapping.csv",
                         [&](std::ostream& out) { write_mapping_csv(out, result); });
+  if (result.loop_pass.ran)
+    write_file_atomically(dir / "loops.csv",
+                          [&](std::ostream& out) { write_loops_csv(out, result.loop_pass); });
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
 }
@@ -226,9 +243,7 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   json["frames"] = result.frames.size();
   json["keyframes"] = result.map.keyframes().size();
   json["threads"] = result.threads;
-  json["seconds"] = {{"prepare", t.prepare},     {"track", t.track},   {"local_ba", t.local_ba},
-                     {"global_ba", t.global_ba}, {"fusion", t.fusion}, {"write", t.write},
-                     {"total", t.total}};
+  json["seconds"] = stage_seconds_json(t);
   json["frames_per_second"] = timing.frames_per_second;
   json["tracking_median_ms"] = timing.tracking_median_ms;
   for (const StageStats& s : timing.stages)

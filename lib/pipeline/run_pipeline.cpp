@@ -7,11 +7,11 @@ namespace slamkit {
 
 RunResult run_batch(const TumSequence& sequence, const Settings& settings,
                     const std::filesystem::path& out, const std::string& sequence_name,
-                    const ProgressCallback& progress) {
+                    const ProgressCallback& progress, const Vocabulary* vocabulary) {
   Stopwatch total, write;
   std::filesystem::create_directories(out);
   RunResult result = track_sequence(sequence, settings, progress);
-  // The loop pass (place recognition, pose graph) plugs in here, before the global BA.
+  close_loops_of(result, sequence.camera(), settings, vocabulary);
   adjust_globally(result, sequence.camera(), settings);
   reanchor_frames(result);
   fuse_final_map(result, sequence, settings, out / "map.ply", progress);
@@ -26,6 +26,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
 Settings front_end_only(Settings settings) {
   settings.optimization.local.enabled = false;
   settings.optimization.global.enabled = false;
+  settings.loop.enabled = false;
   settings.fusion.enabled = false;
   return settings;
 }

@@ -63,10 +63,12 @@ TEST(VocabularyTraining, DescriptorLandsInTheWordOfItsNearestCentreAtEveryLevel)
       if (node == parent) break;  // reached a leaf above this level
       ASSERT_EQ(nodes[node].parent, parent) << "the path goes down one level at a time";
       const int chosen = descriptor_distance(d, nodes[node].descriptor.data());
-      for (size_t sibling = 1; sibling < nodes.size(); ++sibling)
-        if (nodes[sibling].parent == parent)
+      for (size_t sibling = 1; sibling < nodes.size(); ++sibling) {
+        if (nodes[sibling].parent == parent) {
           EXPECT_LE(chosen, descriptor_distance(d, nodes[sibling].descriptor.data()))
               << "descriptor " << q << " level " << level;
+        }
+      }
       EXPECT_EQ(word, vocabulary.transform(d));
       parent = node;
     }

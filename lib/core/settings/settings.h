@@ -3,6 +3,7 @@
 // settings it used (settings.yaml) so that any result can be reproduced.
 #include "core/settings/fusion_settings.h"
 #include "core/settings/keyframe_settings.h"
+#include "core/settings/loop_settings.h"
 #include "core/settings/mapping_settings.h"
 #include "core/settings/matcher_settings.h"
 #include "core/settings/optimization_settings.h"
@@ -20,6 +21,7 @@ struct Settings {
   KeyframeSettings keyframes;
   MappingSettings mapping;
   OptimizationSettings optimization;
+  LoopSettings loop;
   FusionSettings fusion;
   VocabularySettings vocabulary;
   PipelineSettings pipeline;

@@ -1,0 +1,30 @@
+#pragma once
+// Loop closing settings (SPEC section 5; the paper's numbers where it gives them, ORB-SLAM2's
+// from ORBSLAM2_BACKEND.md otherwise).
+
+namespace slamkit {
+
+struct LoopSettings {
+  bool enabled = true;  // (design card) the loop pass between tracking and global BA
+  // (beyond) Offline the whole sequence is known: the vocabulary is trained on the keyframes'
+  // own descriptors (vocabulary settings: k, L) unless a vocabulary file is given
+  // (`run --vocabulary FILE`).
+  bool train_on_sequence = true;
+  // (ORB-SLAM2) Keyframes this close in index to the query are never loop candidates (besides
+  // its covisible neighbours), and no loop is searched before this many keyframes exist.
+  int recent_keyframes = 10;
+  // (paper) A candidate stands only when at least this many of its covisible neighbours are
+  // candidates too (consistency), among its best `consistency_neighbours`.
+  int min_consistent_neighbours = 5;
+  int consistency_neighbours = 10;  // (ORB-SLAM2) its best covisible keyframes
+  int max_verified = 3;             // (ours) candidates verified per keyframe, best score first
+  int min_matches = 50;             // (paper) fewer ORB matches: no loop
+  int min_inliers = 20;             // (ORB-SLAM2) RANSAC inliers of the relative pose
+  double max_pose_error = 1.0;      // (paper) kappa, metres
+  // (ORB-SLAM2) Essential graph: covisibility edges of at least this many shared points, and
+  // the LM iterations of its optimisation.
+  int essential_min_weight = 100;
+  int correction_iterations = 20;
+};
+
+}  // namespace slamkit
