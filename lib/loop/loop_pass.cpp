@@ -81,7 +81,7 @@ class LoopDetector {
         ++verified;
         d.verified = true;
         d.check = verify_loop(map_, k, c.keyframe, matches(k, c.keyframe), camera_,
-                              settings_.tracking.ransac, s);
+                              settings_.tracking.ransac, settings_.tracking.motion_ba, s);
         if (d.check.accepted) loop = LoopConstraint{k, c.keyframe, d.check.T_keyframe_candidate};
       }
       decisions.push_back(d);
@@ -135,7 +135,10 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
     if (const auto loop = detector.detect(k, report.decisions)) report.loops.push_back(*loop);
   report.detection_seconds = watch.lap() / 1000.0;
 
-  if (!report.loops.empty())
+  double largest_gap = 0;
+  for (const LoopDecision& d : report.decisions)
+    if (d.check.accepted) largest_gap = std::max(largest_gap, d.check.pose_error);
+  if (!report.loops.empty() && largest_gap >= s.min_correction)
     report.correction = correct_loops(map, report.loops, {s.essential_min_weight,
                                                           s.correction_iterations});
   report.correction_seconds = watch.lap() / 1000.0;

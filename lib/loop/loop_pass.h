@@ -31,7 +31,8 @@ struct LoopPassReport {
   size_t vocabulary_words = 0;
   std::vector<LoopDecision> decisions;
   std::vector<LoopConstraint> loops;  // the accepted ones
-  PoseGraphReport correction;         // solved when loops were found and corrected
+  // Solved when loops were found and corrected (some loop's gap >= settings.min_correction).
+  PoseGraphReport correction;
   double vocabulary_seconds = 0, detection_seconds = 0, correction_seconds = 0;
 };
 

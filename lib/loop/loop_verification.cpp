@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tracking/icp_svd_ransac.h"
+#include "tracking/motion_only_ba.h"
 
 namespace slamkit {
 namespace {
@@ -17,7 +18,8 @@ std::string fewer_than(int count, const char* what, int minimum) {
 
 LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
                              const std::vector<KeypointPair>& matches, const Camera& camera,
-                             const RansacSettings& ransac, const LoopSettings& settings) {
+                             const RansacSettings& ransac, const MotionBaSettings& motion_ba,
+                             const LoopSettings& settings) {
   const Keyframe& query = map.keyframe(keyframe);
   const Keyframe& other = map.keyframe(candidate);
   LoopVerification result;
@@ -26,12 +28,14 @@ LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
   // Pairs: the candidate's map point in the candidate's camera, the keyframe's keypoint
   // back-projected from its depth.
   std::vector<Eigen::Vector3d> q_candidate, q_keyframe;
+  std::vector<int> keypoint_of_pair;
   for (const KeypointPair& m : matches) {
     const float depth = query.depths[size_t(m.keyframe_keypoint)];
     const int point = other.point_ids[size_t(m.candidate_keypoint)];
     if (depth <= 0 || point < 0 || map.point(point).bad) continue;
     q_candidate.push_back(other.T_c_w * map.point(point).p_w);
     q_keyframe.push_back(camera.back_project(query.undistorted[size_t(m.keyframe_keypoint)], depth));
+    keypoint_of_pair.push_back(m.keyframe_keypoint);
   }
   result.matches = int(q_candidate.size());
   if (result.matches < settings.min_matches) {
@@ -44,8 +48,20 @@ LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
     result.reason = fewer_than(result.inliers, "RANSAC inliers", settings.min_inliers);
     return result;
   }
-  // fit maps the keyframe's camera into the candidate's: T_candidate_keyframe.
-  result.T_keyframe_candidate = fit.T_prev_curr.inverse();
+  // fit maps the keyframe's camera into the candidate's: T_candidate_keyframe. The closed form
+  // weighs every depth alike; refined on the reprojection and disparity of its inliers (the
+  // tracker's motion-only BA, the candidate's camera as the world), the loop edge is as good
+  // as a tracked pose (ORB-SLAM2 refines its loop transform likewise).
+  std::vector<PointObservation> observations;
+  for (size_t i = 0; i < fit.inliers.size(); ++i) {
+    if (!fit.inliers[i]) continue;
+    const int keypoint = keypoint_of_pair[i];
+    observations.push_back({q_candidate[i], query.undistorted[size_t(keypoint)],
+                            query.depths[size_t(keypoint)],
+                            map.pyramid().scale(query.keypoints[size_t(keypoint)].octave)});
+  }
+  const PoseRefinement refined = motion_only_ba(observations, camera, fit.T_prev_curr, motion_ba);
+  result.T_keyframe_candidate = (refined.ok ? refined.T_w_c : fit.T_prev_curr).inverse();
   result.pose_error = (result.T_keyframe_candidate.translation() -
                        result.T_keyframe_candidate_estimated.translation())
                           .norm();

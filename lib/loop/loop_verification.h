@@ -36,9 +36,11 @@ struct LoopVerification {
 };
 
 // Checks the candidate `candidate` for a loop with `keyframe` (both keyframes of `map`), given
-// their descriptor matches (settings: min_matches, min_inliers, max_pose_error).
+// their descriptor matches (settings: min_matches, min_inliers, max_pose_error); the RANSAC
+// pose is refined on its inliers by the motion-only BA (motion_ba).
 LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
                              const std::vector<KeypointPair>& matches, const Camera& camera,
-                             const RansacSettings& ransac, const LoopSettings& settings);
+                             const RansacSettings& ransac, const MotionBaSettings& motion_ba,
+                             const LoopSettings& settings);
 
 }  // namespace slamkit

@@ -16,7 +16,7 @@ LoopVerification verify(const Map& map, int keyframe, int candidate, const Camer
                                                Settings{}.matcher))
     pairs.push_back({m.queryIdx, m.trainIdx});
   return verify_loop(map, keyframe, candidate, pairs, camera, Settings{}.tracking.ransac,
-                     LoopSettings{});
+                     Settings{}.tracking.motion_ba, LoopSettings{});
 }
 
 TEST(LoopVerification, AcceptsTheTrueRevisitWithItsRelativePose) {
