@@ -2,8 +2,21 @@
 # Installs the Debian 12 packages slamkit needs (only those missing) and builds it.
 # Idempotent and quiet when everything is already in place. Works as root or through sudo.
 #   scripts/setup.sh            # install what is missing, configure, build (Release)
+#   --test-tools                # also clang 14 and libFuzzer, for scripts/fuzz.sh and the
+#                               # sanitizer build (scripts/test.sh asks for them under CI)
+#   --packages-only             # install, do not build
 # Environment: SLAMKIT_BUILD_DIR (default: build/ in the repository).
 set -euo pipefail
+
+test_tools=false
+build=true
+for arg in "$@"; do
+  case "$arg" in
+    --test-tools) test_tools=true ;;
+    --packages-only) build=false ;;
+    *) echo "setup: unknown option '$arg' (--test-tools, --packages-only)" >&2; exit 2 ;;
+  esac
+done
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
@@ -15,6 +28,9 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev
   python3-matplotlib
 )
+if $test_tools; then
+  packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev)
+fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -38,6 +54,7 @@ if ((${#missing[@]} > 0)); then
     "${missing[@]}" >/dev/null
 fi
 
+$build || exit 0
 mkdir -p "$build_dir"
 log="$build_dir/setup.log"
 if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release &&

@@ -207,7 +207,7 @@ class SuiteReader {
   void read_tolerances(const YAML::Node& node, std::map<std::string, Tolerance>& tolerances) {
     if (!node.IsMap()) fail(node, "tolerances must be a map: metric: {abs: A, rel: R}");
     for (const auto& kv : node) {
-      const std::string key = kv.first.as<std::string>();
+      const std::string key = scalar_text(kv.first, path_, "a metric name");
       if (!find_metric(key)) {
         std::string list;
         for (const MetricInfo& m : tracked_metrics()) list += (list.empty() ? "" : ", ") + m.key;
@@ -223,7 +223,7 @@ class SuiteReader {
 
   void check_keys(const YAML::Node& map, std::initializer_list<const char*> allowed) const {
     for (const auto& kv : map) {
-      const std::string key = kv.first.as<std::string>();
+      const std::string key = scalar_text(kv.first, path_, "a key");
       if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
         std::string list;
         for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;

@@ -5,13 +5,16 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "io/png_file.h"
+#include "io/value_range.h"
 #include "io/yaml_file.h"
 
 namespace slamkit {
 namespace {
 
+// The key's number, checked against its range (NaN and infinities are outside every range).
 double read_field(const YAML::Node& root, const std::string& path, const char* key,
-                  std::optional<double> fallback) {
+                  std::optional<double> fallback, const Range& range = {-kNoLimit, kNoLimit}) {
   const YAML::Node node = root[key];
   if (!node) {
     if (fallback) return *fallback;
@@ -23,9 +26,19 @@ double read_field(const YAML::Node& root, const std::string& path, const char* k
   } catch (const YAML::Exception&) {
     throw_input_error(path, node.Mark().line + 1, std::string("'") + key + "' is not a number");
   }
-  if (!std::isfinite(value))
-    throw_input_error(path, node.Mark().line + 1, std::string("'") + key + "' is not finite");
+  if (!in_range(value, range))
+    throw_input_error(path, node.Mark().line + 1,
+                      std::string(key) + ": " + node.Scalar() + " is outside " + range_text(range));
   return value;
+}
+
+// Image sides are whole pixels, no larger than any image read_png accepts.
+int read_side(const YAML::Node& root, const std::string& path, const char* key, int fallback) {
+  const double value = read_field(root, path, key, fallback, {1, double(kMaxImageSide)});
+  if (value != std::floor(value))
+    throw_input_error(path, root[key].Mark().line + 1,
+                      std::string(key) + ": " + root[key].Scalar() + " is not a whole number");
+  return int(value);
 }
 
 }  // namespace
@@ -35,9 +48,9 @@ Camera read_camera_yaml(const std::filesystem::path& path) {
   const YAML::Node root = load_yaml_file(path, "calibration file");
   if (!root.IsMap()) throw_input_error(name, "expected a YAML map of calibration keys");
   Camera c;
-  c.name = root["name"] ? root["name"].as<std::string>() : path.stem().string();
-  c.fx = read_field(root, name, "fx", std::nullopt);
-  c.fy = read_field(root, name, "fy", std::nullopt);
+  c.name = root["name"] ? scalar_text(root["name"], name, "name") : path.stem().string();
+  c.fx = read_field(root, name, "fx", std::nullopt, above(0));
+  c.fy = read_field(root, name, "fy", std::nullopt, above(0));
   c.cx = read_field(root, name, "cx", std::nullopt);
   c.cy = read_field(root, name, "cy", std::nullopt);
   c.distortion.k1 = read_field(root, name, "k1", 0.0);
@@ -45,15 +58,14 @@ Camera read_camera_yaml(const std::filesystem::path& path) {
   c.distortion.p1 = read_field(root, name, "p1", 0.0);
   c.distortion.p2 = read_field(root, name, "p2", 0.0);
   c.distortion.k3 = read_field(root, name, "k3", 0.0);
-  c.width = int(read_field(root, name, "width", 640.0));
-  c.height = int(read_field(root, name, "height", 480.0));
-  c.depth_scale = read_field(root, name, "depth_scale", 5000.0);
-  c.min_depth = read_field(root, name, "min_depth", 0.1);
-  c.max_depth = read_field(root, name, "max_depth", 8.0);
-  if (c.fx <= 0 || c.fy <= 0) throw_input_error(name, "fx and fy must be positive");
-  if (c.width <= 0 || c.height <= 0) throw_input_error(name, "width and height must be positive");
-  if (c.depth_scale <= 0) throw_input_error(name, "depth_scale must be positive");
-  if (!(c.min_depth < c.max_depth)) throw_input_error(name, "min_depth must be below max_depth");
+  c.width = read_side(root, name, "width", 640);
+  c.height = read_side(root, name, "height", 480);
+  c.depth_scale = read_field(root, name, "depth_scale", 5000.0, above(0));
+  c.min_depth = read_field(root, name, "min_depth", 0.1, at_least(0));
+  c.max_depth = read_field(root, name, "max_depth", 8.0, above(0));
+  if (!(c.min_depth < c.max_depth))
+    throw_input_error(name, "min_depth " + format_exact(c.min_depth) + " must be below max_depth " +
+                                format_exact(c.max_depth));
   return c;
 }
 

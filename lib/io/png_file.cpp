@@ -25,6 +25,37 @@ void on_png_error(png_structp png, png_const_charp message) {
 }
 void on_png_warning(png_structp, png_const_charp) {}
 
+// Owns libpng's read structures, also when an exception leaves read_png.
+struct ReadStructs {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  ~ReadStructs() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
+// The two steps that call into libpng, each with its own setjmp and no C++ object in its frame,
+// so that libpng's longjmp skips no destructor and leaves no variable indeterminate.
+bool read_header(png_structp png, png_infop info, std::FILE* file) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_init_io(png, file);
+  png_set_sig_bytes(png, 8);
+  png_read_info(png, info);
+  const int colour = png_get_color_type(png, info);
+  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if (png_get_bit_depth(png, info) < 8) png_set_packing(png), png_set_expand(png);
+  if (colour == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_strip_alpha(png);
+  if (colour & PNG_COLOR_MASK_COLOR || colour == PNG_COLOR_TYPE_PALETTE) png_set_bgr(png);
+  png_set_swap(png);  // 16-bit samples are big-endian in the file
+  png_read_update_info(png, info);
+  return true;
+}
+
+bool read_pixels(png_structp png, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_read_image(png, rows);
+  png_read_end(png, nullptr);
+  return true;
+}
+
 }  // namespace
 
 cv::Mat read_png(const std::filesystem::path& path) {
@@ -36,36 +67,29 @@ cv::Mat read_png(const std::filesystem::path& path) {
     throw_input_error(name, "not a PNG file");
 
   std::string error;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error,
-                                           on_png_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) throw_input_error(name, "cannot decode image (out of memory)");
-  cv::Mat image;
-  std::vector<png_bytep> rows;
-  if (setjmp(png_jmpbuf(png))) {  // libpng jumps back here on a decoding error
-    png_destroy_read_struct(&png, &info, nullptr);
+  ReadStructs s;
+  s.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  s.info = s.png ? png_create_info_struct(s.png) : nullptr;
+  if (!s.info) throw_input_error(name, "cannot decode image (out of memory)");
+  if (!read_header(s.png, s.info, file.get()))
     throw_input_error(name, "cannot decode image: " + error);
-  }
-  png_init_io(png, file.get());
-  png_set_sig_bytes(png, 8);
-  png_read_info(png, info);
-  const int colour = png_get_color_type(png, info);
-  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (png_get_bit_depth(png, info) < 8) png_set_packing(png), png_set_expand(png);
-  if (colour == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_strip_alpha(png);
-  if (colour & PNG_COLOR_MASK_COLOR || colour == PNG_COLOR_TYPE_PALETTE) png_set_bgr(png);
-  png_set_swap(png);  // 16-bit samples are big-endian in the file
-  png_read_update_info(png, info);
 
-  const int depth = png_get_bit_depth(png, info) == 16 ? CV_16U : CV_8U;
-  const int channels = png_get_channels(png, info);
-  image.create(int(png_get_image_height(png, info)), int(png_get_image_width(png, info)),
-               CV_MAKETYPE(depth, channels));
-  rows.resize(size_t(image.rows));
+  const png_uint_32 width = png_get_image_width(s.png, s.info);
+  const png_uint_32 height = png_get_image_height(s.png, s.info);
+  const size_t row_bytes = png_get_rowbytes(s.png, s.info);
+  if (width > png_uint_32(kMaxImageSide) || height > png_uint_32(kMaxImageSide) ||
+      double(row_bytes) * height > double(kMaxImageBytes))
+    throw_input_error(name, "the header claims a " + std::to_string(width) + "x" +
+                                std::to_string(height) + " image (" +
+                                std::to_string(uint64_t(row_bytes) * height >> 20) +
+                                " MiB decoded); images are limited to " +
+                                std::to_string(kMaxImageSide) + " pixels a side and " +
+                                std::to_string(kMaxImageBytes >> 20) + " MiB");
+  const int depth = png_get_bit_depth(s.png, s.info) == 16 ? CV_16U : CV_8U;
+  cv::Mat image(int(height), int(width), CV_MAKETYPE(depth, png_get_channels(s.png, s.info)));
+  std::vector<png_bytep> rows(height);
   for (int r = 0; r < image.rows; ++r) rows[size_t(r)] = image.ptr<png_byte>(r);
-  png_read_image(png, rows.data());
-  png_read_end(png, nullptr);
-  png_destroy_read_struct(&png, &info, nullptr);
+  if (!read_pixels(s.png, rows.data())) throw_input_error(name, "cannot decode image: " + error);
   return image;
 }
 

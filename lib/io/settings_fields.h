@@ -11,29 +11,9 @@
 #include "core/enum_names.h"
 #include "core/number_format.h"
 #include "core/settings/settings.h"
+#include "io/value_range.h"
 
 namespace slamkit {
-
-// The values a numeric setting accepts: lo..hi, lo itself excluded when lo_excluded (a scale
-// factor must exceed 1). NaN and infinities are outside every range.
-struct Range {
-  double lo;
-  double hi;
-  bool lo_excluded = false;
-};
-inline constexpr double kNoLimit = std::numeric_limits<double>::max();
-constexpr Range at_least(double lo) { return {lo, kNoLimit}; }
-constexpr Range above(double lo, double hi = kNoLimit) { return {lo, hi, true}; }
-
-inline bool in_range(double value, const Range& range) {
-  return std::isfinite(value) && (range.lo_excluded ? value > range.lo : value >= range.lo) &&
-         value <= range.hi;
-}
-// "1..100000", "1 (excluded)..2", "0..inf".
-inline std::string range_text(const Range& range) {
-  return format_exact(range.lo) + (range.lo_excluded ? " (excluded).." : "..") +
-         (range.hi == kNoLimit ? "inf" : format_exact(range.hi));
-}
 
 template <class V>
 void visit_fields(OrbSettings& s, V& v) {

@@ -77,7 +77,7 @@ class YamlReader {
 
   void reject_unknown_keys() const {
     for (const auto& entry : node_) {
-      const std::string key = entry.first.as<std::string>();
+      const std::string key = scalar_text(entry.first, path_, "a setting name");
       if (!known_.count(key)) fail(entry.first, "unknown setting '" + prefix_ + key + "'");
     }
   }
@@ -89,9 +89,10 @@ class YamlReader {
     const YAML::Node child = take(name);
     if (!child) return child;
     if constexpr (std::is_enum_v<T>) {
-      const auto named = value_named(enum_names(value), child.as<std::string>());
+      const std::string text = scalar_text(child, path_, prefix_ + name);
+      const auto named = value_named(enum_names(value), text);
       if (!named)
-        fail(child, "'" + child.as<std::string>() + "' is not a value of " + prefix_ + name + " (" +
+        fail(child, "'" + text + "' is not a value of " + prefix_ + name + " (" +
                         choices(enum_names(value)) + ")");
       value = *named;
     } else {

@@ -15,6 +15,14 @@ YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& 
   }
 }
 
+std::string scalar_text(const YAML::Node& node, const std::string& path, const std::string& what) {
+  if (node.IsScalar()) return node.Scalar();
+  const char* kind = node.IsMap() ? "a map" : node.IsSequence() ? "a list" : "empty";
+  const std::string message = what + " must be a plain value, found " + kind;
+  if (node.Mark().is_null()) throw_input_error(path, message);
+  throw_input_error(path, node.Mark().line + 1, message);
+}
+
 void write_yaml_file(const std::filesystem::path& path, const YAML::Emitter& document) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   write_file_atomically(path, [&](std::ostream& out) { out << document.c_str() << "\n"; });

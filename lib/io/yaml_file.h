@@ -10,6 +10,11 @@ namespace slamkit {
 // Throws InputError "path: <what> not found" or "path:line: YAML error: ...".
 YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& what);
 
+// The text of a plain value (a key or a setting); InputError "path:line: <what> must be a plain
+// value, not a map/list/null" otherwise, where yaml-cpp's as<std::string>() would throw its own
+// exception type without the file.
+std::string scalar_text(const YAML::Node& node, const std::string& path, const std::string& what);
+
 // Writes the emitter's document, creating the folder. Throws InputError when it cannot.
 void write_yaml_file(const std::filesystem::path& path, const YAML::Emitter& document);
 

@@ -1,0 +1,114 @@
+#include "fuzz_parsers.h"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "core/settings/settings.h"
+#include "eval/regression/suite.h"
+#include "io/camera_yaml.h"
+#include "io/png_file.h"
+#include "io/settings_yaml.h"
+#include "io/trajectory_io.h"
+#include "io/tum_sequence.h"
+
+namespace slamkit::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_bytes(const fs::path& file, const uint8_t* data, size_t size) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  if (!out) throw std::runtime_error("fuzz: cannot write " + file.string());
+}
+
+// A sequence folder whose name gives the Freiburg 1 camera, so no calibration file is needed.
+fs::path sequence_folder(const fs::path& scratch) {
+  const fs::path folder = scratch / "rgbd_dataset_freiburg1_fuzz";
+  fs::create_directories(folder);
+  return folder;
+}
+
+// rgb.txt and depth.txt: the input serves as both lists, which exercises the association too.
+void parse_tum_list(const fs::path& input, const fs::path& scratch) {
+  const fs::path folder = sequence_folder(scratch);
+  fs::copy_file(input, folder / "rgb.txt", fs::copy_options::overwrite_existing);
+  fs::copy_file(input, folder / "depth.txt", fs::copy_options::overwrite_existing);
+  TumSequence::open(folder);
+}
+
+void parse_association(const fs::path& input, const fs::path& scratch) {
+  SequenceOptions options;
+  options.association_file = input;
+  TumSequence::open(sequence_folder(scratch), options);
+}
+
+// As `eval` reads them: the benchmark's defaults, and evo's with nanosecond stamps.
+void parse_trajectory(const fs::path& input, const fs::path&) {
+  read_tum_trajectory(input);
+  read_tum_trajectory(input, {TimeUnit::kNanoseconds, DuplicateStamps::kKeepFirst});
+}
+
+void parse_settings(const fs::path& input, const fs::path&) {
+  Settings settings;
+  read_settings_yaml(input, settings);
+}
+
+void parse_calibration(const fs::path& input, const fs::path&) { read_camera_yaml(input); }
+
+void parse_png(const fs::path& input, const fs::path&) { read_png(input); }
+
+// What `slamkit regress` passes, with the preset and TUM names fixed here (the synthetic
+// generator and the download script are not needed to parse) and downloads off.
+void parse_suite(const fs::path& input, const fs::path& scratch) {
+  regress::SuiteContext context;
+  context.data_dir = scratch;
+  context.presets = {"desk", "loop", "lowtexture", "jerk"};
+  context.tum_names = [] { return std::vector<std::string>{"freiburg1_desk", "freiburg2_desk"}; };
+  context.download = false;
+  regress::load_suite(input, context);
+}
+
+fs::path process_scratch() {
+  static const fs::path scratch = [] {
+    const fs::path dir =
+        fs::temp_directory_path() / ("slamkit_fuzz_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    return dir;
+  }();
+  return scratch;
+}
+
+}  // namespace
+
+const std::vector<FuzzTarget>& fuzz_targets() {
+  static const std::vector<FuzzTarget> targets = {
+      {"tum_list", parse_tum_list},       {"association", parse_association},
+      {"trajectory", parse_trajectory},   {"settings", parse_settings},
+      {"calibration", parse_calibration}, {"png", parse_png},
+      {"suite", parse_suite},
+  };
+  return targets;
+}
+
+const FuzzTarget& fuzz_target(const std::string& name) {
+  for (const FuzzTarget& target : fuzz_targets())
+    if (target.name == name) return target;
+  throw std::invalid_argument("no fuzz target '" + name + "'");
+}
+
+void parse_bytes(const FuzzTarget& target, const uint8_t* data, size_t size) {
+  const fs::path scratch = process_scratch();
+  const fs::path input = scratch / ("input_" + target.name);
+  write_bytes(input, data, size);
+  try {
+    target.parse(input, scratch);
+  } catch (const InputError&) {
+    // The clean refusal: one line naming the file, exit code 2 at the command line.
+  }
+}
+
+}  // namespace slamkit::fuzz
