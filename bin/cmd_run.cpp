@@ -100,24 +100,25 @@ void run(const RunArgs& args) {
   if (!args.vocabulary_file.empty()) vocabulary = load_vocabulary(args.vocabulary_file);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
 
-  const RunStart started = begin_run_folder(args.out, settings);
-  RunResult result;
-  {
-    StageProgress progress;
-    result =
-        run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress),
-                  vocabulary ? &*vocabulary : nullptr);
-  }
-  print_tracking_summary(seq, result);
-  print_back_end_summary(seq, settings, result);
-  if (settings.pipeline.evaluate) {
-    evaluate_run_folder(seq, args.out);
-    if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
-  }
-  write_run_status(started, result.seconds);
-  std::printf("output      %s\n", args.out.c_str());
-  if (result.fusion.frames > 0)
-    std::printf("map         %s\n", (std::filesystem::path(args.out) / "map.ply").c_str());
+  fill_run_folder(begin_run_folder(args.out, settings), [&] {
+    RunResult result;
+    {
+      StageProgress progress;
+      result =
+          run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress),
+                    vocabulary ? &*vocabulary : nullptr);
+    }
+    print_tracking_summary(seq, result);
+    print_back_end_summary(seq, settings, result);
+    if (settings.pipeline.evaluate) {
+      evaluate_run_folder(seq, args.out);
+      if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
+    }
+    std::printf("output      %s\n", args.out.c_str());
+    if (result.fusion.frames > 0)
+      std::printf("map         %s\n", (std::filesystem::path(args.out) / "map.ply").c_str());
+    return result.seconds;
+  });
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {

@@ -33,19 +33,20 @@ void track(const TrackArgs& args) {
   settings = front_end_only(settings);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
 
-  const RunStart started = begin_run_folder(args.out, settings);
-  RunResult result;
-  {
-    StageProgress progress;
-    result = track_sequence(seq, settings, std::ref(progress));
-  }
-  const std::string name = seq.folder().filename().string();
-  write_run_outputs(args.out, name, seq.camera(), settings, result);
-  write_timing_json(args.out, name, result);
-  print_tracking_summary(seq, result);
-  std::printf("output      %s\n", args.out.c_str());
-  if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out);
-  write_run_status(started, result.seconds);
+  fill_run_folder(begin_run_folder(args.out, settings), [&] {
+    RunResult result;
+    {
+      StageProgress progress;
+      result = track_sequence(seq, settings, std::ref(progress));
+    }
+    const std::string name = seq.folder().filename().string();
+    write_run_outputs(args.out, name, seq.camera(), settings, result);
+    write_timing_json(args.out, name, result);
+    print_tracking_summary(seq, result);
+    std::printf("output      %s\n", args.out.c_str());
+    if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out);
+    return result.seconds;
+  });
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {

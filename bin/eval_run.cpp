@@ -94,6 +94,7 @@ Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
   require_plausible_stamps(in.est.trajectory, a.est);
   print_reader_warnings(a, in.gt);
   print_reader_warnings(a, in.est);
+  eval::require_associable(in.gt.trajectory, in.est.trajectory, a.gt, a.est, in.association);
   in.pairs = eval::associate(in.gt.trajectory, in.est.trajectory, in.association);
   if (need_pairs)
     eval::require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,

@@ -25,6 +25,7 @@ void align_into_groundtruth(std::vector<Eigen::Vector3f>& points, const Trajecto
                             const std::filesystem::path& trajectory) {
   const Trajectory est = read_tum_trajectory(trajectory).trajectory;
   const eval::AssociationOptions options;
+  eval::require_associable(gt, est, "groundtruth", trajectory.string(), options);
   const auto pairs = eval::associate(gt, est, options);
   eval::require_enough_pairs(pairs.size(), gt, est, "groundtruth", trajectory.string(), options);
   const eval::Alignment alignment =

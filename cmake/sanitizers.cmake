@@ -7,7 +7,7 @@ option(SLAMKIT_FUZZ "Build the libFuzzer targets (tests/fuzz; needs clang)" OFF)
 if(SLAMKIT_SANITIZE OR SLAMKIT_FUZZ)
   # A UB report aborts like an ASan one, so a test or fuzzer fails on it instead of going on.
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=undefined
-                      -fno-omit-frame-pointer -g)
+                      -fno-omit-frame-pointer -g1)  # -g1: line tables for reports, less to compile
   add_link_options(-fsanitize=address,undefined)
 endif()
 

@@ -117,6 +117,18 @@ std::vector<IndexPair> associate(const Trajectory& gt, const Trajectory& est,
   return pairs;
 }
 
+void require_associable(const Trajectory& gt, const Trajectory& est, const std::string& gt_name,
+                        const std::string& est_name, const AssociationOptions& options) {
+  // associate_tum looks at the poses within twice the tolerance; evo's rule is a binary search.
+  if (options.method != AssociationMethod::kTum ||
+      !too_crowded_to_associate(gt.stamps(), est.stamps(), 2 * options.max_diff, options.offset))
+    return;
+  throw_input_error(est_name, "timestamps too crowded to associate with " + gt_name + ": over " +
+                                  std::to_string(kMaxCandidatesPerStamp) +
+                                  " poses within the tolerance of each other on average (stamps "
+                                  "not in seconds? see --time-unit)");
+}
+
 void require_enough_pairs(size_t pair_count, const Trajectory& gt, const Trajectory& est,
                           const std::string& gt_name, const std::string& est_name,
                           const AssociationOptions& options) {

@@ -31,6 +31,11 @@ struct AssociationOptions {
 std::vector<IndexPair> associate(const Trajectory& gt, const Trajectory& est,
                                  const AssociationOptions& options);
 
+// Throws InputError naming the estimate when the stamps crowd together so that the benchmark's
+// association would take quadratic time and memory (core/association.h: too_crowded_to_associate).
+void require_associable(const Trajectory& gt, const Trajectory& est, const std::string& gt_name,
+                        const std::string& est_name, const AssociationOptions& options);
+
 // Throws InputError when fewer than 2 pairs matched, saying how many poses each file has,
 // their time ranges and the tolerance used.
 void require_enough_pairs(size_t pair_count, const Trajectory& gt, const Trajectory& est,

@@ -141,7 +141,7 @@ void require_complete_run(const std::filesystem::path& dir) {
                     "the run is not complete (status " +
                         (status.is_string() ? "'" + printable(status.get<std::string>(), 40) + "'"
                                             : std::string("unreadable")) +
-                        "): it was interrupted or is still running; run it again");
+                        "): it stopped on an error, was interrupted or is still running; run it again");
 }
 
 }  // namespace slamkit::eval

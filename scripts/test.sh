@@ -2,11 +2,23 @@
 # Sets up (scripts/setup.sh) and runs the whole test suite with ctest.
 # Real-data tests read SLAMKIT_DATA (a folder with the TUM sequences and trajectories); without
 # it they are skipped with a message, except under CI=true where they fail.
+# Under CI=true it then runs the fast suites under ASan+UBSan (scripts/sanitize.sh) and a short
+# fuzz pass over every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per target, default 15).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
-"$root/scripts/setup.sh"
+ci=false
+[[ "${CI:-}" == "true" ]] && ci=true
+if $ci; then
+  "$root/scripts/setup.sh" --test-tools  # clang and libFuzzer for the fuzz pass
+else
+  "$root/scripts/setup.sh"
+fi
 if [[ -z "${SLAMKIT_DATA:-}" ]]; then
   echo "test: SLAMKIT_DATA is not set: tests on real TUM data will be skipped"
 fi
 ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" "$@"
+if $ci; then
+  "$root/scripts/sanitize.sh"
+  "$root/scripts/fuzz.sh" "${SLAMKIT_CI_FUZZ_SECONDS:-15}"
+fi

@@ -33,6 +33,11 @@ std::optional<Baseline> read_baseline(const fs::path& file) {
   } catch (const json::exception& e) {
     throw_input_error(file.string(), std::string("not valid JSON: ") + e.what());
   }
+  if (doc.is_object() && doc.contains("format") && doc["format"] != kBaselineFormat)
+    throw_input_error(file.string(), "baseline format " + doc["format"].dump().substr(0, 40) +
+                                         " is not supported (this slamkit reads format " +
+                                         std::to_string(kBaselineFormat) +
+                                         "; write it again with --update-baselines)");
   if (!doc.is_object() || !doc.contains("metrics") || !doc["metrics"].is_object())
     throw_input_error(file.string(), "no \"metrics\" object (write it with --update-baselines)");
   Baseline b;
@@ -52,6 +57,7 @@ std::optional<Baseline> read_baseline(const fs::path& file) {
 
 void write_baseline(const fs::path& file, const Baseline& b) {
   json doc;
+  doc["format"] = kBaselineFormat;
   doc["version"] = b.provenance.version;
   doc["settings_hash"] = b.provenance.settings_hash;
   doc["machine"] = b.provenance.machine;

@@ -23,7 +23,12 @@ struct Baseline {
   RunMetrics metrics;
 };
 
-// Nothing when the file does not exist; InputError naming it when it is malformed.
+// The baseline file format this slamkit writes and reads; a file without "format" predates the
+// field and is format 1.
+constexpr int kBaselineFormat = 1;
+
+// Nothing when the file does not exist; InputError naming it when it is malformed or of another
+// format.
 std::optional<Baseline> read_baseline(const std::filesystem::path& file);
 void write_baseline(const std::filesystem::path& file, const Baseline& baseline);
 

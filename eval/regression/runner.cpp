@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "eval/checksum.h"
+#include "eval/metrics_json.h"
 #include "eval/regression/baseline.h"
 #include "eval/regression/process.h"
 #include "io/settings_yaml.h"
@@ -141,6 +142,7 @@ void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::str
     try {
       const json done = json::parse(read_text(marker));
       if (done.value("fingerprint", "") == fingerprint) {
+        eval::require_complete_run(run.dir);  // a later `slamkit run` there may have been cut
         run.ok = run.reused = true;
         run.finished = done.value("finished", "");
         run.seconds = done.value("seconds", 0.0);
@@ -149,6 +151,8 @@ void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::str
       }
     } catch (const json::exception&) {
       // A damaged marker: the run is done again.
+    } catch (const InputError& e) {
+      say("run again   %s: %s\n", entry.name, e.what());
     }
   }
   fs::remove_all(run.dir);

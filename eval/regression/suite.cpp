@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "eval/regression/metrics.h"
 #include "io/settings_yaml.h"
+#include "io/tum_sequence.h"
 #include "io/yaml_file.h"
 
 namespace slamkit::regress {
@@ -132,6 +133,14 @@ class SuiteReader {
       s.calibration = relative_to_suite(scalar(calibration, "calibration"));
       if (!fs::is_regular_file(s.calibration))
         fail(calibration, "calibration file '" + s.calibration.string() + "' not found");
+    }
+    if (s.kind == SequenceSource::Kind::kFolder) {
+      // Its lists, camera and groundtruth are checked now too (the images only when it runs), so
+      // that a broken sequence is bad input (exit 2) before anything runs.
+      SequenceOptions options;
+      if (!s.calibration.empty()) options.calibration_file = s.calibration;
+      options.depth_scale = s.depth_scale;
+      TumSequence::open(s.folder, options);
     }
     return s;
   }

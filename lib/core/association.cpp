@@ -6,6 +6,24 @@
 
 namespace slamkit {
 
+size_t count_candidate_pairs(const std::vector<double>& first, const std::vector<double>& second,
+                             double window, double offset) {
+  size_t count = 0;
+  for (const double a : first) {
+    const double target = a - offset;
+    const auto lo = std::lower_bound(second.begin(), second.end(), target - window);
+    const auto hi = std::upper_bound(lo, second.end(), target + window);
+    count += size_t(hi - lo);
+  }
+  return count;
+}
+
+bool too_crowded_to_associate(const std::vector<double>& first, const std::vector<double>& second,
+                              double window, double offset) {
+  return count_candidate_pairs(first, second, window, offset) >
+         kMaxCandidatesPerStamp * (first.size() + second.size());
+}
+
 std::vector<IndexPair> associate_greedy(const std::vector<double>& first,
                                         const std::vector<double>& second, double max_diff,
                                         double offset) {

@@ -1,9 +1,9 @@
 #include "io/text_table.h"
 
 #include <cstdlib>
-#include <fstream>
 
 #include "core/error.h"
+#include "io/line_reader.h"
 
 namespace slamkit {
 
@@ -11,16 +11,16 @@ std::vector<TableRow> read_table(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw_input_error(path.string(), "file not found");
   if (std::filesystem::is_directory(path))
     throw_input_error(path.string(), "is a folder, expected a file");
-  std::ifstream in(path);
-  if (!in) throw_input_error(path.string(), "cannot open file");
+  LineReader reader(path, path.string());
   std::vector<TableRow> rows;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
+  std::string_view line;
+  while (reader.next(line)) {
     const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    TableRow row{number, {}};
+    if (first == std::string_view::npos || line[first] == '#') continue;
+    if (rows.size() == kMaxTableRows)
+      throw_input_error(path.string(), reader.line_number(),
+                        "more than " + std::to_string(kMaxTableRows) + " rows: beyond what slamkit reads");
+    TableRow row{reader.line_number(), {}};
     std::string field;
     for (char ch : line) {
       if (ch == ' ' || ch == '\t' || ch == ',' || ch == '\r') {
@@ -42,7 +42,8 @@ double parse_number(const std::filesystem::path& path, const TableRow& row, size
   const std::string& text = row.fields[field];
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
+  // The whole field: a NUL byte inside it would otherwise end the number early.
+  if (end == text.c_str() || end != text.c_str() + text.size())
     throw_input_error(path.string(), row.line,
                       "field " + std::to_string(field + 1) + " is not a number: '" + text + "'");
   return value;

@@ -13,7 +13,11 @@ struct TableRow {
   std::vector<std::string> fields;
 };
 
-// Throws InputError when the file cannot be opened.
+// A list of a million frames reads in about 150 MB; a table holds at most this many rows (18
+// hours of frames at 30 Hz), and its lines at most kMaxLineBytes (line_reader.h).
+constexpr size_t kMaxTableRows = 2'000'000;
+
+// Throws InputError when the file cannot be opened, and for a table beyond those limits.
 std::vector<TableRow> read_table(const std::filesystem::path& path);
 
 // Parses a whole field as a double; throws InputError naming path and line otherwise.

@@ -14,49 +14,10 @@
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/line_reader.h"
 
 namespace slamkit {
 namespace {
-
-// Lines of a file read in large blocks (a million-pose file is 83 MB; getline and a string
-// per field made reading it take seconds).
-class LineReader {
- public:
-  explicit LineReader(const std::filesystem::path& path)
-      : file_(std::fopen(path.c_str(), "rb"), &std::fclose), buffer_(1 << 20) {}
-  bool is_open() const { return file_ != nullptr; }
-
-  // The next line without its '\n'; false at the end of the file.
-  bool next(std::string_view& line) {
-    for (;;) {
-      const char* start = buffer_.data() + begin_;
-      if (const void* nl = std::memchr(start, '\n', end_ - begin_)) {
-        line = std::string_view(start, size_t(static_cast<const char*>(nl) - start));
-        begin_ += line.size() + 1;
-        return true;
-      }
-      if (eof_) {
-        line = std::string_view(start, end_ - begin_);
-        begin_ = end_;
-        return !line.empty();
-      }
-      std::memmove(buffer_.data(), start, end_ - begin_);
-      end_ -= begin_;
-      begin_ = 0;
-      if (end_ == buffer_.size()) buffer_.resize(2 * buffer_.size());  // a very long line
-      const size_t got = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_.get());
-      end_ += got;
-      if (got == 0) eof_ = true;
-    }
-  }
-  bool failed() const { return std::ferror(file_.get()) != 0; }
-
- private:
-  std::unique_ptr<FILE, int (*)(FILE*)> file_;
-  std::vector<char> buffer_;
-  size_t begin_ = 0, end_ = 0;
-  bool eof_ = false;
-};
 
 bool is_separator(char ch) { return ch == ' ' || ch == '\t' || ch == ',' || ch == '\r'; }
 
@@ -166,15 +127,13 @@ TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
   const std::string name = printable(path.string(), 4096);
   if (!std::filesystem::exists(path)) throw_input_error(name, "file not found");
   if (std::filesystem::is_directory(path)) throw_input_error(name, "is a folder, expected a file");
-  LineReader reader(path);
-  if (!reader.is_open()) throw_input_error(name, "cannot open file");
+  LineReader reader(path, name);
 
   TrajectoryFile result;
   Parsed parsed;
   std::string_view line;
-  int number = 0;
   while (reader.next(line)) {
-    ++number;
+    const int number = reader.line_number();
     if (number == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // BOM
     const size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string_view::npos || line[first] == '#') continue;
@@ -214,10 +173,13 @@ TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
       continue;
     }
     q.coeffs() /= norm;
+    if (parsed.stamps.size() == kMaxTrajectoryPoses)
+      throw_input_error(name, number,
+                        "more than " + std::to_string(kMaxTrajectoryPoses) +
+                            " poses: beyond what slamkit evaluates (cut the file, or subsample)");
     if (!parsed.stamps.empty() && values[0] < parsed.stamps.back()) result.was_unsorted = true;
     parsed.push_back(values[0], Eigen::Vector3d(values[1], values[2], values[3]), q, number);
   }
-  if (reader.failed()) throw_input_error(name, "read error");
   if (parsed.stamps.empty()) throw_input_error(name, "no valid pose in the file");
   if (result.was_unsorted) {
     result.warnings.push_back(name + ": timestamps are not in order; sorted them");

@@ -33,10 +33,13 @@ struct TrajectoryFile {
 // Values beyond this magnitude are rejected: no pose or time is that large, and squares of
 // them would overflow the statistics to inf.
 constexpr double kMaxTrajectoryValue = 1e100;
+// A trajectory holds at most this many poses (28 hours at 100 Hz; about 200 bytes a pose while
+// reading, so 2 GB at most), and its lines at most kMaxLineBytes (line_reader.h).
+constexpr size_t kMaxTrajectoryPoses = 10'000'000;
 
 // Reads a trajectory. Errors (InputError naming file and line): lines with other than 8
 // fields, fields that are not wholly a number (a NUL byte inside one included), values beyond
-// kMaxTrajectoryValue, files with no pose. Lines with non-finite values or a zero quaternion
+// kMaxTrajectoryValue, files with no pose, more than kMaxTrajectoryPoses, lines too long. Lines with non-finite values or a zero quaternion
 // are skipped, and of a repeated timestamp one line is kept (options.duplicates), each
 // reported in warnings. A UTF-8 byte order mark is skipped; quaternions are normalised;
 // unsorted files are sorted, with a warning. Input quoted in messages is escaped (printable).

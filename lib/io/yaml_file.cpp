@@ -8,6 +8,12 @@ namespace slamkit {
 YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& what) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) throw_input_error(name, what + " not found");
+  if (std::filesystem::is_directory(path)) throw_input_error(name, "is a folder, expected a file");
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  if (!error && size > kMaxYamlBytes)
+    throw_input_error(name, what + " of " + std::to_string(size >> 20) + " MiB: larger than the " +
+                                std::to_string(kMaxYamlBytes >> 20) + " MiB a YAML file may have");
   try {
     return YAML::LoadFile(name);
   } catch (const YAML::Exception& e) {

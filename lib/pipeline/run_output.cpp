@@ -162,6 +162,22 @@ void write_run_status(const RunStart& run, const StageTimes& t) {
                         [&](std::ostream& out) { out << json.dump(2) << "\n"; });
 }
 
+void fill_run_folder(const RunStart& run, const std::function<StageTimes()>& work) {
+  StageTimes seconds;
+  try {
+    seconds = work();
+  } catch (const std::exception& e) {
+    set_interrupt_handler(SIG_DFL);
+    nlohmann::json json = status_json(run, "failed");
+    json["ended"] = utc_now_iso();
+    json["error"] = e.what();
+    write_file_atomically(run.dir / "run.json",
+                          [&](std::ostream& out) { out << json.dump(2) << "\n"; });
+    throw;
+  }
+  write_run_status(run, seconds);
+}
+
 TimingSummary summarise_timing(const RunResult& result) {
   std::vector<double> decode, features, code, match, pose, refine, keyframe, mapping, tracking;
   for (size_t i = 0; i < result.frames.size(); ++i) {

@@ -4,6 +4,7 @@
 // it), timing.json; with the back end, trajectory_tracked.txt (the poses before its
 // corrections reached the frames).
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "core/camera.h"
@@ -30,6 +31,10 @@ struct RunStart {
 };
 RunStart begin_run_folder(const std::filesystem::path& dir, const Settings& settings);
 void write_run_status(const RunStart& run, const StageTimes& seconds);
+// Calls work(), which writes the folder's other files and returns the stage times, then
+// write_run_status. When work throws (a frame that cannot be read), run.json says "failed" with
+// the message, which readers refuse as they refuse an interrupted run, and the exception goes on.
+void fill_run_folder(const RunStart& run, const std::function<StageTimes()>& work);
 
 // Per-stage statistics of a run, as written to timing.json.
 struct StageStats {

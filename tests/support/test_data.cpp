@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 
 namespace slamkit::test {
 
@@ -33,8 +35,10 @@ std::filesystem::path temp_dir(const std::string& tag) {
   return dir;
 }
 
-int run_slamkit(const std::string& arguments, std::string* output) {
-  const std::string command = std::string(SLAMKIT_BINARY) + " " + arguments + " 2>&1";
+namespace {
+
+// Runs a shell command; returns its exit code (-1 when it did not exit) and its stdout.
+int run_command(const std::string& command, std::string* output) {
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return -1;
   std::array<char, 4096> buffer;
@@ -44,6 +48,22 @@ int run_slamkit(const std::string& arguments, std::string* output) {
   const int status = pclose(pipe);
   if (output) *output = text;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+int run_slamkit(const std::string& arguments, std::string* output) {
+  return run_command(std::string(SLAMKIT_BINARY) + " " + arguments + " 2>&1", output);
+}
+
+SlamkitResult run_slamkit_apart(const std::string& arguments) {
+  const std::filesystem::path err = temp_dir("stderr") / "stderr.txt";
+  SlamkitResult result;
+  result.code =
+      run_command(std::string(SLAMKIT_BINARY) + " " + arguments + " 2>" + err.string(), &result.out);
+  std::ifstream in(err);
+  result.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return result;
 }
 
 }  // namespace slamkit::test

@@ -22,6 +22,14 @@ std::filesystem::path temp_dir(const std::string& tag);
 // stdout+stderr into `output`.
 int run_slamkit(const std::string& arguments, std::string* output = nullptr);
 
+// Runs the slamkit executable with stdout and stderr kept apart.
+struct SlamkitResult {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+SlamkitResult run_slamkit_apart(const std::string& arguments);
+
 }  // namespace slamkit::test
 
 // Declares `var` as the real-data path, or fails (CI) / skips (elsewhere) the test.
