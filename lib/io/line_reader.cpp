@@ -1,6 +1,5 @@
 #include "io/line_reader.h"
 
-#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -10,7 +9,7 @@ namespace slamkit {
 LineReader::LineReader(const std::filesystem::path& path, std::string name)
     : name_(std::move(name)), file_(std::fopen(path.c_str(), "rb"), &std::fclose) {
   if (!file_) throw_input_error(name_, "cannot open file");
-  buffer_.resize(std::max<size_t>(1 << 20, 2 * kMaxLineBytes));
+  buffer_.resize(2 * kMaxLineBytes);  // a whole line always fits beside the partial one
 }
 
 bool LineReader::next(std::string_view& line) {

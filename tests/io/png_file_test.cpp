@@ -61,5 +61,21 @@ TEST(PngFile, BadFilesAreInputErrorsNamingTheFile) {
   EXPECT_THROW(write_png(dir / "f.png", cv::Mat(4, 4, CV_32FC1)), InputError);
 }
 
+TEST(PngFile, HeadersClaimingHugeImagesAreRefusedBeforeAnyPixelMemory) {
+  const std::filesystem::path seeds = std::filesystem::path(SLAMKIT_SOURCE_DIR) / "tests" / "fuzz" /
+                                      "seeds" / "png";
+  for (const char* name : {"rgb_header_claims_100000x100000.png",
+                           "depth_header_claims_60000x60000.png"}) {
+    try {
+      read_png(seeds / name);
+      FAIL() << name;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("images are limited to 16384 pixels a side and 256 MiB"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace slamkit

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "eval/checksum.h"
 #include "eval/metrics_json.h"
+#include "eval/regression/metrics.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 #include "pipeline_test_support.h"
@@ -92,6 +93,42 @@ TEST(RunStatus, SigtermMidRunMarksTheFolderInterruptedAndLeavesNoTemporary) {
               std::string::npos)
         << e.what();
   }
+
+  // The readers refuse it: eval compare in one line naming run.json, regress's metrics reader.
+  const test::SlamkitResult compare =
+      test::run_slamkit_apart("eval compare " + dir.string() + " --out " + (dir / "cmp").string());
+  EXPECT_EQ(compare.code, 2);
+  EXPECT_EQ(compare.err, "slamkit: error: " + (dir / "run.json").string() +
+                             ": the run is not complete (status 'interrupted'): it stopped on an "
+                             "error, was interrupted or is still running; run it again\n");
+  EXPECT_THROW(regress::read_run_metrics(dir), InputError);
+
+  // Run again into the same folder: complete, and both readers take it.
+  std::string output;
+  ASSERT_EQ(test::run_slamkit("run " + sequence.string() + " --out " + dir.string(), &output), 0)
+      << output;
+  EXPECT_EQ(read_json(dir / "run.json")["status"], "complete");
+  EXPECT_TRUE(temporaries(dir).empty());
+  EXPECT_EQ(test::run_slamkit("eval compare " + dir.string() + " --out " + (dir / "cmp").string(),
+                              &output),
+            0)
+      << output;
+  EXPECT_GT(regress::read_run_metrics(dir).count("ate_rmse"), 0u);
+}
+
+TEST(RunStatus, BadInputMidRunMarksTheFolderFailed) {
+  const fs::path sequence = test::temp_dir("run_status") / "seq";
+  fs::copy(test::synthetic_sequence(synth::Preset::kDesk, 10), sequence,
+           fs::copy_options::recursive);
+  const auto depth = *fs::directory_iterator(sequence / "depth");
+  std::ofstream(depth.path(), std::ios::trunc) << "not a png";
+  const fs::path dir = test::temp_dir("run_status") / "run";
+  std::string output;
+  EXPECT_EQ(test::run_slamkit("run " + sequence.string() + " --out " + dir.string(), &output), 2);
+  const nlohmann::json status = read_json(dir / "run.json");
+  EXPECT_EQ(status["status"], "failed");
+  EXPECT_NE(status["error"].get<std::string>().find(depth.path().string()), std::string::npos);
+  EXPECT_THROW(eval::require_complete_run(dir), InputError);
 }
 
 }  // namespace

@@ -184,6 +184,22 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     EXPECT_NE(output.find("run         jerk"), std::string::npos);
     EXPECT_EQ(stable_report(out / "report.md"), stable_report(dir / "first" / "report.md"));
   }
+  {
+    SCOPED_TRACE("a finished entry whose run folder was cut later is run again, not reused");
+    const fs::path out = dir / "killed";
+    std::ofstream(out / "runs" / "jerk" / "run.json", std::ios::trunc)
+        << "{\"status\": \"interrupted\", \"signal\": 15}\n";
+    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string() + " --history " +
+                              (out / "history.csv").string(),
+                          &output),
+              0);
+    EXPECT_NE(output.find("reuse       desk"), std::string::npos);
+    EXPECT_NE(output.find("run again   jerk: " + (out / "runs" / "jerk" / "run.json").string() +
+                          ": the run is not complete (status 'interrupted')"),
+              std::string::npos)
+        << output;
+    EXPECT_NE(output.find("run         jerk"), std::string::npos);
+  }
 }
 
 TEST(RegressCliInput, BadSuiteExitsTwoWithOneLineNamingFileAndLine) {
