@@ -137,11 +137,12 @@ void require_complete_run(const std::filesystem::path& dir) {
   const json j = json::parse(in, nullptr, false);
   const json status = j.is_object() ? j.value("status", json()) : json();
   if (status == "complete") return;
-  throw_input_error(path.string(),
-                    "the run is not complete (status " +
-                        (status.is_string() ? "'" + printable(status.get<std::string>(), 40) + "'"
-                                            : std::string("unreadable")) +
-                        "): it stopped on an error, was interrupted or is still running; run it again");
+  throw_input_error(
+      path.string(),
+      "the run is not complete (status " +
+          (status.is_string() ? "'" + printable(status.get<std::string>(), 40) + "'"
+                              : std::string("unreadable")) +
+          "): it stopped on an error, was interrupted or is still running; run it again");
 }
 
 }  // namespace slamkit::eval

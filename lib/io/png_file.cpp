@@ -85,12 +85,11 @@ cv::Mat read_png(const std::filesystem::path& path) {
   const size_t row_bytes = png_get_rowbytes(s.png, s.info);
   if (width > png_uint_32(kMaxImageSide) || height > png_uint_32(kMaxImageSide) ||
       double(row_bytes) * height > double(kMaxImageBytes))
-    throw_input_error(name, "the header claims a " + std::to_string(width) + "x" +
-                                std::to_string(height) + " image (" +
-                                std::to_string(uint64_t(row_bytes) * height >> 20) +
-                                " MiB decoded); images are limited to " +
-                                std::to_string(kMaxImageSide) + " pixels a side and " +
-                                std::to_string(kMaxImageBytes >> 20) + " MiB");
+    throw_input_error(
+        name, "the header claims a " + std::to_string(width) + "x" + std::to_string(height) +
+                  " image (" + std::to_string(uint64_t(row_bytes) * height >> 20) +
+                  " MiB decoded); images are limited to " + std::to_string(kMaxImageSide) +
+                  " pixels a side and " + std::to_string(kMaxImageBytes >> 20) + " MiB");
   const int depth = png_get_bit_depth(s.png, s.info) == 16 ? CV_16U : CV_8U;
   cv::Mat image(int(height), int(width), CV_MAKETYPE(depth, png_get_channels(s.png, s.info)));
   std::vector<png_bytep> rows(height);

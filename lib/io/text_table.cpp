@@ -18,8 +18,9 @@ std::vector<TableRow> read_table(const std::filesystem::path& path) {
     const size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string_view::npos || line[first] == '#') continue;
     if (rows.size() == kMaxTableRows)
-      throw_input_error(path.string(), reader.line_number(),
-                        "more than " + std::to_string(kMaxTableRows) + " rows: beyond what slamkit reads");
+      throw_input_error(
+          path.string(), reader.line_number(),
+          "more than " + std::to_string(kMaxTableRows) + " rows: beyond what slamkit reads");
     TableRow row{reader.line_number(), {}};
     std::string field;
     for (char ch : line) {

@@ -39,10 +39,11 @@ constexpr size_t kMaxTrajectoryPoses = 10'000'000;
 
 // Reads a trajectory. Errors (InputError naming file and line): lines with other than 8
 // fields, fields that are not wholly a number (a NUL byte inside one included), values beyond
-// kMaxTrajectoryValue, files with no pose, more than kMaxTrajectoryPoses, lines too long. Lines with non-finite values or a zero quaternion
-// are skipped, and of a repeated timestamp one line is kept (options.duplicates), each
-// reported in warnings. A UTF-8 byte order mark is skipped; quaternions are normalised;
-// unsorted files are sorted, with a warning. Input quoted in messages is escaped (printable).
+// kMaxTrajectoryValue, files with no pose, more than kMaxTrajectoryPoses, lines too long. Lines
+// with non-finite values or a zero quaternion are skipped, and of a repeated timestamp one line is
+// kept (options.duplicates), each reported in warnings. A UTF-8 byte order mark is skipped;
+// quaternions are normalised; unsorted files are sorted, with a warning. Input quoted in messages
+// is escaped (printable).
 TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
                                    const TrajectoryReadOptions& options = {});
 

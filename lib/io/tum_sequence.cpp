@@ -52,7 +52,8 @@ std::vector<FrameFiles> associate_lists(const fs::path& folder, const SequenceOp
   std::vector<double> rgb_stamps, depth_stamps;
   for (const auto& f : rgb) rgb_stamps.push_back(f.stamp);
   for (const auto& f : depth) depth_stamps.push_back(f.stamp);
-  if (too_crowded_to_associate(rgb_stamps, depth_stamps, options.max_time_diff, options.time_offset))
+  if (too_crowded_to_associate(rgb_stamps, depth_stamps, options.max_time_diff,
+                               options.time_offset))
     throw_input_error((folder / "rgb.txt").string(),
                       "timestamps too crowded to associate: over " +
                           std::to_string(kMaxCandidatesPerStamp) +

@@ -26,7 +26,8 @@ inline bool in_range(double value, const Range& range) {
 }
 // "1..100000", "1 (excluded)..2", "0..inf", "-inf..inf".
 inline std::string range_text(const Range& range) {
-  return (range.lo == -kNoLimit ? "-inf" : format_exact(range.lo)) + (range.lo_excluded ? " (excluded).." : "..") +
+  return (range.lo == -kNoLimit ? "-inf" : format_exact(range.lo)) +
+         (range.lo_excluded ? " (excluded).." : "..") +
          (range.hi == kNoLimit ? "inf" : format_exact(range.hi));
 }
 

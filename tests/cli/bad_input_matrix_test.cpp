@@ -29,7 +29,8 @@ void expect_one_line_naming_the_file(const Case& c) {
   EXPECT_EQ(r.code, 2) << r.err;
   ASSERT_FALSE(r.err.empty());
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line:\n" << r.err;
-  const std::string where = c.file.string() + (c.line > 0 ? ":" + std::to_string(c.line) + ":" : "");
+  const std::string where =
+      c.file.string() + (c.line > 0 ? ":" + std::to_string(c.line) + ":" : "");
   EXPECT_NE(r.err.find(where), std::string::npos) << "does not name " << where << ":\n" << r.err;
 }
 
@@ -121,19 +122,16 @@ std::vector<Case> sequence_cases(Sequences& s, const std::string& command,
                       })),
        s.root() / "short_line" / "rgb.txt", 3},
       {"wrong image type",
-       args(s.variant("depth_8bit",
-                      [](auto f) {
-                        Sequences::write_frame(f, "1.000000", cv::Size(64, 48), CV_8UC1);
-                      })),
+       args(s.variant(
+           "depth_8bit",
+           [](auto f) { Sequences::write_frame(f, "1.000000", cv::Size(64, 48), CV_8UC1); })),
        s.root() / "depth_8bit" / "depth" / frame},
       {"wrong image size",
-       args(s.variant("small_frame",
-                      [](auto f) {
-                        Sequences::write_frame(f, "1.000000", cv::Size(32, 24), CV_16UC1);
-                      })),
+       args(s.variant(
+           "small_frame",
+           [](auto f) { Sequences::write_frame(f, "1.000000", cv::Size(32, 24), CV_16UC1); })),
        s.root() / "small_frame" / "rgb" / frame},
-      {"empty depth",
-       args(s.variant("empty_png", [&](auto f) { write(f / "depth" / frame, ""); })),
+      {"empty depth", args(s.variant("empty_png", [&](auto f) { write(f / "depth" / frame, ""); })),
        s.root() / "empty_png" / "depth" / frame},
       {"empty depth",
        args(s.variant("empty_list", [](auto f) { write(f / "depth.txt", "# depth\n"); })),
@@ -154,22 +152,25 @@ std::vector<Case> sequence_cases(Sequences& s, const std::string& command,
        s.root() / "late_groundtruth" / "groundtruth.txt"},
   };
   if (geteuid() != 0)  // root reads a file whatever its permissions
-    cases.push_back({"unreadable file",
-                     args(s.variant("no_permission",
-                                    [](auto f) {
-                                      fs::permissions(f / "rgb.txt", fs::perms::none);
-                                    })),
-                     s.root() / "no_permission" / "rgb.txt"});
+    cases.push_back(
+        {"unreadable file",
+         args(s.variant("no_permission",
+                        [](auto f) { fs::permissions(f / "rgb.txt", fs::perms::none); })),
+         s.root() / "no_permission" / "rgb.txt"});
   return cases;
 }
 
-// --settings with a key that is not a setting (track and run).
-Case unknown_setting(Sequences& s, const std::string& command, const std::string& options) {
+// track and run: the sequence's classes, and --settings with a key that is not a setting.
+void expect_run_commands_refuse_bad_input(const std::string& command) {
+  Sequences s;
+  const std::string options = " --no-eval --threads 1 --out " + (s.root() / "out").string();
+  for (const Case& c : sequence_cases(s, command, options)) expect_one_line_naming_the_file(c);
   const fs::path settings = s.root() / "typo.yaml";
   write(settings, "orb:\n  num_feature: 500\n");
-  return {"unknown setting",
-          command + " " + s.good().string() + options + " --settings " + settings.string(),
-          settings, 2};
+  expect_one_line_naming_the_file(
+      {"unknown setting",
+       command + " " + s.good().string() + options + " --settings " + settings.string(),
+       settings, 2});
 }
 
 TEST(BadInputMatrix, TheGoodSequenceIsRead) {
@@ -178,19 +179,9 @@ TEST(BadInputMatrix, TheGoodSequenceIsRead) {
   EXPECT_EQ(test::run_slamkit("info " + s.good().string(), &output), 0) << output;
 }
 
-TEST(BadInputMatrix, Track) {
-  Sequences s;
-  const std::string options = " --no-eval --threads 1 --out " + (s.root() / "out").string();
-  for (const Case& c : sequence_cases(s, "track", options)) expect_one_line_naming_the_file(c);
-  expect_one_line_naming_the_file(unknown_setting(s, "track", options));
-}
+TEST(BadInputMatrix, Track) { expect_run_commands_refuse_bad_input("track"); }
 
-TEST(BadInputMatrix, Run) {
-  Sequences s;
-  const std::string options = " --no-eval --threads 1 --out " + (s.root() / "out").string();
-  for (const Case& c : sequence_cases(s, "run", options)) expect_one_line_naming_the_file(c);
-  expect_one_line_naming_the_file(unknown_setting(s, "run", options));
-}
+TEST(BadInputMatrix, Run) { expect_run_commands_refuse_bad_input("run"); }
 
 TEST(BadInputMatrix, Info) {
   Sequences s;
@@ -208,8 +199,8 @@ TEST(BadInputMatrix, EvalAteRpeAll) {
     const auto args = [&](const fs::path& g, const fs::path& e) {
       return std::string("eval ") + metric + " " + g.string() + " " + e.string() + " --no-plot";
     };
-    expect_one_line_naming_the_file({"missing file", args(s.root() / "none.txt", est),
-                                     s.root() / "none.txt"});
+    expect_one_line_naming_the_file(
+        {"missing file", args(s.root() / "none.txt", est), s.root() / "none.txt"});
     expect_one_line_naming_the_file({"unreadable file", args(gt, folder), folder});
     write(bad, "1.0 0 0 0 0 0 0 1\n1.01 0 0 0 0 0 1\n");
     expect_one_line_naming_the_file({"malformed line", args(gt, bad), bad, 2});
@@ -254,21 +245,20 @@ TEST(BadInputMatrix, Regress) {
     write(suite, text);
     expect_one_line_naming_the_file({input_class, args, file, line});
   };
-  expect_one_line_naming_the_file(
-      {"missing file", "regress " + (s.root() / "none.yaml").string() + " --out x",
-       s.root() / "none.yaml"});
+  expect_one_line_naming_the_file({"missing file",
+                                   "regress " + (s.root() / "none.yaml").string() + " --out x",
+                                   s.root() / "none.yaml"});
   replace_by_folder(s.root() / "folder.yaml");
-  expect_one_line_naming_the_file(
-      {"unreadable file", "regress " + (s.root() / "folder.yaml").string() + " --out x",
-       s.root() / "folder.yaml"});
+  expect_one_line_naming_the_file({"unreadable file",
+                                   "regress " + (s.root() / "folder.yaml").string() + " --out x",
+                                   s.root() / "folder.yaml"});
   expect("malformed line", entry("synthetic: {preset: desk, frames: [}"), suite, 3);
   expect("non-finite value", "tolerances:\n  ate_rmse: {abs: .nan}\n" + desk, suite, 2);
   expect("unknown setting", desk + "    settings: {orb: {num_feature: 500}}\n", suite, 4);
   const fs::path late = s.variant("late_groundtruth", [](auto f) {
     write(f / "groundtruth.txt", Sequences::groundtruth(1000));
   });
-  expect("no groundtruth overlap", entry("folder: " + late.string()), late / "groundtruth.txt",
-         0);
+  expect("no groundtruth overlap", entry("folder: " + late.string()), late / "groundtruth.txt", 0);
   const fs::path broken = s.variant("short_line", [](auto f) {
     write(f / "rgb.txt", "# colour\n1.000000 rgb/1.000000.png\n1.033333\n");
   });

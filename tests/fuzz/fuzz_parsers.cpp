@@ -74,8 +74,7 @@ void parse_suite(const fs::path& input, const fs::path& scratch) {
 
 fs::path process_scratch() {
   static const fs::path scratch = [] {
-    const fs::path dir =
-        fs::temp_directory_path() / ("slamkit_fuzz_" + std::to_string(getpid()));
+    const fs::path dir = fs::temp_directory_path() / ("slamkit_fuzz_" + std::to_string(getpid()));
     fs::create_directories(dir);
     return dir;
   }();
@@ -86,9 +85,12 @@ fs::path process_scratch() {
 
 const std::vector<FuzzTarget>& fuzz_targets() {
   static const std::vector<FuzzTarget> targets = {
-      {"tum_list", parse_tum_list},       {"association", parse_association},
-      {"trajectory", parse_trajectory},   {"settings", parse_settings},
-      {"calibration", parse_calibration}, {"png", parse_png},
+      {"tum_list", parse_tum_list},
+      {"association", parse_association},
+      {"trajectory", parse_trajectory},
+      {"settings", parse_settings},
+      {"calibration", parse_calibration},
+      {"png", parse_png},
       {"suite", parse_suite},
   };
   return targets;

@@ -62,10 +62,10 @@ TEST(PngFile, BadFilesAreInputErrorsNamingTheFile) {
 }
 
 TEST(PngFile, HeadersClaimingHugeImagesAreRefusedBeforeAnyPixelMemory) {
-  const std::filesystem::path seeds = std::filesystem::path(SLAMKIT_SOURCE_DIR) / "tests" / "fuzz" /
-                                      "seeds" / "png";
-  for (const char* name : {"rgb_header_claims_100000x100000.png",
-                           "depth_header_claims_60000x60000.png"}) {
+  const std::filesystem::path seeds =
+      std::filesystem::path(SLAMKIT_SOURCE_DIR) / "tests" / "fuzz" / "seeds" / "png";
+  for (const char* name :
+       {"rgb_header_claims_100000x100000.png", "depth_header_claims_60000x60000.png"}) {
     try {
       read_png(seeds / name);
       FAIL() << name;

@@ -59,8 +59,8 @@ int run_slamkit(const std::string& arguments, std::string* output) {
 SlamkitResult run_slamkit_apart(const std::string& arguments) {
   const std::filesystem::path err = temp_dir("stderr") / "stderr.txt";
   SlamkitResult result;
-  result.code =
-      run_command(std::string(SLAMKIT_BINARY) + " " + arguments + " 2>" + err.string(), &result.out);
+  result.code = run_command(std::string(SLAMKIT_BINARY) + " " + arguments + " 2>" + err.string(),
+                            &result.out);
   std::ifstream in(err);
   result.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   return result;
