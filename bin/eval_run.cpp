@@ -83,7 +83,7 @@ struct Inputs {
 };
 
 // Reads both files, associates them and reports coverage; `need_pairs` makes fewer than 2
-// associated pairs an error.
+// associated pairs an error, as is no overlap in time at all.
 Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
   Inputs in;
   in.association = rules.association;
@@ -96,10 +96,12 @@ Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
   print_reader_warnings(a, in.est);
   eval::require_associable(in.gt.trajectory, in.est.trajectory, a.gt, a.est, in.association);
   in.pairs = eval::associate(in.gt.trajectory, in.est.trajectory, in.association);
-  if (need_pairs)
+  in.coverage = eval::compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
+  // Without any overlap in time no metric can be computed: said as for ATE, not as RPE's
+  // "no pose pair" after a coverage warning.
+  if (need_pairs || (in.pairs.empty() && in.coverage.overlap_s == 0))
     eval::require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
                                in.association);
-  in.coverage = eval::compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
   if (const auto text = eval::coverage_warning(in.coverage)) warn(a, *text);
   return in;
 }

@@ -1,5 +1,6 @@
 #include "fusion/ply_cloud.h"
 
+#include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
 
@@ -62,6 +63,8 @@ PlyCloud read_ply_cloud(const fs::path& path) {
   if (!fs::is_regular_file(path)) throw_input_error(name, "PLY file not found");
   pcl::PointCloud<pcl::PointXYZRGB> in;
   int status = -1;
+  // PCL prints its own parse errors and warnings (a map without colour); ours is the one line.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   try {
     status = pcl::io::loadPLYFile(name, in);
   } catch (const std::exception&) {
