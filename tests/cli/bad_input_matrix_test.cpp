@@ -312,5 +312,26 @@ TEST(BadInputMatrix, MapEval) {
       {"no groundtruth overlap", args(map, seq, " --trajectory " + est.string()), est});
 }
 
+TEST(BadInputMatrix, VocabAndRunVocabulary) {
+  Sequences s;
+  const fs::path folder = s.root() / "a_folder.voc", text = s.root() / "text.voc";
+  const fs::path future = s.root() / "future.voc";
+  replace_by_folder(folder);
+  write(text, "10 5 0 0\n0 1 2 3\n");
+  // Our binary header: magic, then version 99 (little-endian), then a node count.
+  std::ofstream(future, std::ios::binary) << std::string("SKVOCAB\0", 8)
+                                          << std::string("\x63\0\0\0\0\0\0\0\0\0\0\0", 12);
+  expect_one_line_naming_the_file(
+      {"missing file", "vocab info " + (s.root() / "none.voc").string(), s.root() / "none.voc"});
+  expect_one_line_naming_the_file({"unreadable file", "vocab info " + folder.string(), folder});
+  expect_one_line_naming_the_file({"malformed line", "vocab info " + text.string(), text, 2});
+  expect_one_line_naming_the_file({"unsupported version", "vocab info " + future.string(), future});
+  expect_one_line_naming_the_file(
+      {"unsupported version",
+       "run " + s.good().string() + " --out " + (s.root() / "out").string() + " --vocabulary " +
+           future.string(),
+       future});
+}
+
 }  // namespace
 }  // namespace slamkit
