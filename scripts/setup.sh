@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages slamkit needs (only those missing) and builds it.
 # Idempotent and quiet when everything is already in place. Works as root or through sudo.
-#   scripts/setup.sh            # install what is missing, configure, build (Release)
+#   scripts/setup.sh               # install what is missing, configure, build (Release)
+#   scripts/setup.sh --with-slurm  # also Slurm, slurmdbd, munge and MariaDB's server binary,
+#                                  # for the loopback Slurm test (scripts/slurm_loopback.sh)
 # Environment: SLAMKIT_BUILD_DIR (default: build/ in the repository).
 set -euo pipefail
 
@@ -15,6 +17,18 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev
   python3-matplotlib
 )
+case "${1:-}" in
+  "") ;;
+  --with-slurm)
+    # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)
+    # with the MariaDB server it stores into, and munge for authentication.
+    packages+=(slurm-wlm slurmdbd munge mariadb-server-core)
+    ;;
+  *)
+    echo "usage: scripts/setup.sh [--with-slurm]" >&2
+    exit 2
+    ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do
