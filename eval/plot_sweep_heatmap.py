@@ -40,7 +40,11 @@ def main():
         for j in range(len(sequences)):
             text = "–" if math.isnan(ate[i, j]) else "%.2f" % (1000 * ate[i, j])
             weight = "bold" if not math.isnan(ate[i, j]) and ate[i, j] == best[j] else "normal"
-            ax.text(j, i, text, ha="center", va="center", fontsize=9, fontweight=weight)
+            # The colour map's ends are dark: white text there.
+            shade = (ratio[i, j] - 1.0) / (top - 1.0) if np.isfinite(ratio[i, j]) else 0.5
+            colour = "white" if shade < 0.15 or shade > 0.85 else "black"
+            ax.text(j, i, text, ha="center", va="center", fontsize=9, fontweight=weight,
+                    color=colour)
     ax.set_xticks(range(len(sequences)), sequences, rotation=30, ha="right")
     ax.set_yticks(range(len(variants)), variants)
     ax.set_xlabel("sequence")

@@ -131,6 +131,7 @@ int run_task(const fs::path& dir, int index, int threads, const SweepEnvironment
                       "no job " + std::to_string(index) + " (the plan has 0.." +
                           std::to_string(plan.jobs.size() - 1) + ")");
   std::printf("task        %d: %s\n", index, plan.jobs[index].label().c_str());
+  std::fflush(stdout);  // into Slurm's log before a cancellation can end the task
   const regress::EntryRun run =
       regress::run_requests({plan.request(size_t(index))}, runner_options(plan, 1, threads, env))
           .front();

@@ -120,7 +120,7 @@ TEST(SweepFile, ErrorsNameTheFileLineAndKey) {
   EXPECT_EQ(f.error(head + "grid:\n  orb.num_features: []\n"),
             file + ":9: orb.num_features needs a non-empty list of values");
   EXPECT_EQ(f.error(head + "variants:\n  - name: a\n    settings:\n      orb: {fast_type: fast7}\n"),
-            file + ":11: 'fast7' is not a value of orb.fast_type (fast9, fast12)");
+            file + ":11: 'fast7' is not a value of orb.fast_type (fast9 or fast12)");
   EXPECT_EQ(f.error(head + "variants:\n  - name: a\n    settings: {orb: {num_featurs: 5}}\n"),
             file + ":10: unknown setting 'orb.num_featurs'");
   EXPECT_EQ(f.error(head + "grid:\n  tracking.ransac.seed: [1, 2]\nseeds: [1]\n"),
