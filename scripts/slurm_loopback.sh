@@ -144,6 +144,9 @@ MpiDefault=none
 MailProg=/bin/true
 ReturnToService=2
 KillWait=5
+# scontrol forgets a finished job after MinJobAge: an hour, so the scontrol fallback below still
+# sees the cancelled task on a slow machine.
+MinJobAge=3600
 SchedulerType=sched/backfill
 NodeName=localhost NodeAddr=127.0.0.1 CPUs=2 RealMemory=4000 State=UNKNOWN
 PartitionName=loopback Nodes=localhost Default=YES MaxTime=INFINITE State=UP
@@ -204,6 +207,13 @@ status="$("$slamkit" sweep status "$slurm_dir")"
 echo "$status"
 grep -q "3 done, 0 pending, 0 running, 1 failed, 0 missing" <<<"$status" || fail "sweep status"
 grep -q "^failed  *0 .*CANCELLED (${job}_0)" <<<"$status" || fail "status of the cancelled task"
+# Without accounting storage sacct refuses; status falls back to scontrol show job.
+sed 's#^AccountingStorageType=.*#AccountingStorageType=accounting_storage/none#' "$SLURM_CONF" \
+  >"$state/slurm-no-accounting.conf"
+status="$(SLURM_CONF="$state/slurm-no-accounting.conf" "$slamkit" sweep status "$slurm_dir")"
+echo "$status"
+grep -q "Slurm states from squeue and scontrol" <<<"$status" || fail "no fallback to scontrol"
+grep -q "^failed  *0 .*CANCELLED (${job}_0)" <<<"$status" || fail "scontrol: the cancelled task"
 set +e
 collected="$("$slamkit" sweep collect "$slurm_dir")"
 code=$?
