@@ -93,7 +93,8 @@ const bool kRegistered = register_command([](CLI::App& root) {
                   "slurm: array tasks running at once (the %M of --array; 0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  run->add_option("--partition", args->slurm.partition, "slurm: partition (default: the cluster's)");
+  run->add_option("--partition", args->slurm.partition,
+                  "slurm: partition (default: the cluster's)");
   run->add_flag("--resubmit-missing", args->resubmit_missing,
                 "slurm: submit again only the tasks that did not finish (failed, cancelled, "
                 "timed out, lost with their node, never run)");
@@ -115,7 +116,8 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   task->callback([args] {
-    finish([&] { return sweep::run_task(args->dir, args->index, args->threads, environment(*args)); });
+    finish(
+        [&] { return sweep::run_task(args->dir, args->index, args->threads, environment(*args)); });
   });
 
   CLI::App* status = cmd->add_subcommand(

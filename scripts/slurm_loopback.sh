@@ -2,8 +2,8 @@
 # A real Slurm on this machine only, for the sweep's Slurm backend (ctest slurm_loopback).
 # Starts munged, MariaDB with slurmdbd (sacct needs accounting storage), slurmctld and slurmd:
 # NodeName localhost, loopback addresses, free ports, CPUs=2, every file under STATE_DIR.
-# Then sbatches a small sweep (a 40-frame synthetic sequence, 2 ORB feature counts x 2
-# seeds), cancels a running task with scancel, resubmits it with --resubmit-missing,
+# Then sbatches the tests' tiny sweep (tests/sweep/tiny.yaml: a 40-frame synthetic sequence,
+# 2 ORB feature counts x 2 seeds), cancels a running task with scancel, resubmits it with --resubmit-missing,
 # collects, and checks that the same sweep run with --backend local gives the same metrics.
 # Every daemon it started is stopped by its pid, whatever happens.
 #   scripts/slurm_loopback.sh SLAMKIT_BINARY STATE_DIR
@@ -167,22 +167,12 @@ wait_for 60 "idle node" node_idle
 say "slurmctld (pid $(cat "$state/slurmctld.pid"), port $ctld_port) and slurmd (pid" \
   "$(cat "$state/slurmd.pid"), port $slurmd_port) up: $(sinfo -h -o '%P %D node(s) %c CPUs %t')"
 
-cat >"$state/loopback.yaml" <<'YAML'
-sweep: loopback
-description: the loopback Slurm test's sweep
-suite:
-  entries:
-    - name: desk
-      synthetic: {preset: desk, frames: 40}
-grid:
-  orb.num_features: [300, 600]
-seeds: [1, 2]
-YAML
+sweep_file="$(dirname "${BASH_SOURCE[0]}")/../tests/sweep/tiny.yaml"
 slurm_dir="$state/sweep-slurm"
 local_dir="$state/sweep-local"
 slurm_options=(--backend slurm --cpus 1 --mem 1G --time 00:10:00 --max-running 2)
 
-"$slamkit" sweep plan "$state/loopback.yaml" --out "$slurm_dir"
+"$slamkit" sweep plan "$sweep_file" --out "$slurm_dir"
 submitted="$("$slamkit" sweep run "$slurm_dir" "${slurm_options[@]}")"
 echo "$submitted"
 job="$(sed -n 's/.*submitted array job \([0-9][0-9]*\).*/\1/p' <<<"$submitted")"
@@ -239,7 +229,7 @@ grep -q "4 done, 0 pending, 0 running, 0 failed, 0 missing" <<<"$status" || fail
 "$slamkit" sweep collect "$slurm_dir"
 
 # The same sweep on this machine: the same numbers, timing aside.
-"$slamkit" sweep plan "$state/loopback.yaml" --out "$local_dir" >/dev/null
+"$slamkit" sweep plan "$sweep_file" --out "$local_dir" >/dev/null
 "$slamkit" sweep run "$local_dir" --backend local --jobs 2
 "$slamkit" sweep collect "$local_dir" >/dev/null
 metrics_without_timing() {

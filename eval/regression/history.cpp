@@ -76,7 +76,8 @@ std::optional<fs::path> draw_comparison(const SuiteReport& report) {
       ++runs;
     }
   if (runs == 0) return std::nullopt;
-  return eval::draw_plot("plot_compare.py", args, report.out / "ate_comparison.png", "comparison plot");
+  return eval::draw_plot("plot_compare.py", args, report.out / "ate_comparison.png",
+                         "comparison plot");
 }
 
 std::optional<fs::path> draw_history(const fs::path& history, const SuiteReport& report) {

@@ -101,7 +101,8 @@ void render_synthetic(SequenceJob& job, const RunnerOptions& options, int thread
   std::error_code lost_race;
   fs::rename(temp, job.folder, lost_race);
   if (lost_race) {
-    if (!fs::exists(job.folder)) throw fs::filesystem_error("cannot rename", temp, job.folder, lost_race);
+    if (!fs::exists(job.folder))
+      throw fs::filesystem_error("cannot rename", temp, job.folder, lost_race);
     fs::remove_all(temp);  // another task's copy is in place: the same pixels
   }
   fs::rename(log, dir / (name + ".log"), lost_race);
@@ -242,8 +243,8 @@ std::vector<EntryRun> run_requests(const std::vector<RunRequest>& requests,
 std::vector<EntryRun> run_entries(const Suite& suite, const RunnerOptions& options) {
   std::vector<RunRequest> requests;
   for (const SuiteEntry& e : suite.entries)
-    requests.push_back({&e, e.name, options.out / "runs" / e.name,
-                        options.out / "settings" / (e.name + ".yaml")});
+    requests.push_back(
+        {&e, e.name, options.out / "runs" / e.name, options.out / "settings" / (e.name + ".yaml")});
   return run_requests(requests, options);
 }
 

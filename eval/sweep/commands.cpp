@@ -79,9 +79,10 @@ int run_local(const fs::path& dir, int jobs, int threads, const SweepEnvironment
     failed += !r.ok;
     reused += r.reused;
   }
-  std::printf("local       %zu jobs: %zu finished (%d reused), %d failed; next: slamkit sweep "
-              "collect %s\n",
-              runs.size(), runs.size() - size_t(failed), reused, failed, dir.c_str());
+  std::printf(
+      "local       %zu jobs: %zu finished (%d reused), %d failed; next: slamkit sweep "
+      "collect %s\n",
+      runs.size(), runs.size() - size_t(failed), reused, failed, dir.c_str());
   return failed ? 1 : 0;
 }
 
@@ -113,10 +114,11 @@ int run_slurm(const fs::path& dir, const SlurmOptions& options, bool resubmit_mi
     return 1;
   }
   const Submission s = submit_array(plan, indices, options, env.slamkit);
-  std::printf("slurm       submitted array job %s: %zu tasks (--array=%s), %s per task, %d CPUs, "
-              "%s memory\n",
-              s.job_id.c_str(), indices.size(), s.array.c_str(), options.time.c_str(),
-              options.cpus, options.memory.c_str());
+  std::printf(
+      "slurm       submitted array job %s: %zu tasks (--array=%s), %s per task, %d CPUs, "
+      "%s memory\n",
+      s.job_id.c_str(), indices.size(), s.array.c_str(), options.time.c_str(), options.cpus,
+      options.memory.c_str());
   std::printf("slurm       script %s; logs %s\n", (dir / "slurm" / "sweep.sbatch").c_str(),
               task_log(dir, s.job_id, 0).parent_path().c_str());
   std::printf("next        slamkit sweep status %s; slamkit sweep collect %s\n", dir.c_str(),
@@ -127,9 +129,9 @@ int run_slurm(const fs::path& dir, const SlurmOptions& options, bool resubmit_mi
 int run_task(const fs::path& dir, int index, int threads, const SweepEnvironment& env) {
   const Plan plan = load_plan(dir, env.suite);
   if (index < 0 || size_t(index) >= plan.jobs.size())
-    throw_input_error((dir / "jobs.tsv").string(),
-                      "no job " + std::to_string(index) + " (the plan has 0.." +
-                          std::to_string(plan.jobs.size() - 1) + ")");
+    throw_input_error((dir / "jobs.tsv").string(), "no job " + std::to_string(index) +
+                                                       " (the plan has 0.." +
+                                                       std::to_string(plan.jobs.size() - 1) + ")");
   std::printf("task        %d: %s\n", index, plan.jobs[index].label().c_str());
   std::fflush(stdout);  // into Slurm's log before a cancellation can end the task
   const regress::EntryRun run =
@@ -147,8 +149,7 @@ int print_status(const fs::path& dir, const SweepEnvironment& env) {
   if (!status.submissions.empty()) {
     std::string ids;
     for (const Submission& s : status.submissions) ids += (ids.empty() ? "" : ", ") + s.job_id;
-    std::printf(" (array jobs %s; Slurm states from %s)", ids.c_str(),
-                status.slurm_source.c_str());
+    std::printf(" (array jobs %s; Slurm states from %s)", ids.c_str(), status.slurm_source.c_str());
   }
   std::printf("\n");
   print_unfinished(plan, status);

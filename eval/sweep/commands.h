@@ -24,11 +24,10 @@ int run_local(const std::filesystem::path& dir, int jobs, int threads, const Swe
 // Submits the jobs that are not finished as one job array. A folder submitted before is
 // refused unless resubmit_missing, which submits only the tasks that are neither finished nor
 // queued or running.
-int run_slurm(const std::filesystem::path& dir, const SlurmOptions& options,
-              bool resubmit_missing, const SweepEnvironment& env);
+int run_slurm(const std::filesystem::path& dir, const SlurmOptions& options, bool resubmit_missing,
+              const SweepEnvironment& env);
 // One job, as an array task runs it.
-int run_task(const std::filesystem::path& dir, int index, int threads,
-             const SweepEnvironment& env);
+int run_task(const std::filesystem::path& dir, int index, int threads, const SweepEnvironment& env);
 int print_status(const std::filesystem::path& dir, const SweepEnvironment& env);
 int collect_sweep(const std::filesystem::path& dir, const SweepEnvironment& env);
 

@@ -75,7 +75,7 @@ Plan write_plan(const fs::path& sweep_file, const fs::path& dir,
   Plan plan;
   plan.dir = dir;
   plan.data_dir = context.data_dir;
-  plan.sweep = load_sweep(fs::absolute(sweep_file), context);
+  plan.sweep = load_sweep(fs::absolute(sweep_file).lexically_normal(), context);
   expand(plan);
   fs::create_directories(dir);
   write_file_atomically(dir / kJobsFile, [&](std::ostream& out) {

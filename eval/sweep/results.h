@@ -36,7 +36,7 @@ struct Ranking {
 struct SweepResults {
   const Plan* plan = nullptr;
   SweepStatus status;
-  std::vector<JobResult> jobs;  // in index order
+  std::vector<JobResult> jobs;    // in index order
   std::vector<Ranking> rankings;  // one per rank_by metric with pairs > 0
 
   int finished() const;  // done with readable metrics

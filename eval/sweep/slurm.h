@@ -57,7 +57,8 @@ SlurmStates query_slurm(const std::vector<Submission>& submissions);
 // The parsers behind query_slurm, over the commands' text:
 //   squeue -h -r --me -o '%F|%K|%T'            12|3|RUNNING
 //   sacct -n -P -X -j ID,... -o JobID,State    12_3|CANCELLED by 0
-//   scontrol -o show job ID                    JobId=15 ArrayJobId=12 ArrayTaskId=3 ... JobState=...
+//   scontrol -o show job ID                    JobId=15 ArrayJobId=12 ArrayTaskId=3 ...
+//   JobState=...
 // Each gives array job id -> index -> state; lines of other jobs or of pending ranges are
 // passed over.
 using ArrayStates = std::map<std::string, std::map<int, std::string>>;

@@ -49,8 +49,8 @@ TaskCategory classify(bool finished, const std::string& folder, const std::strin
   if (is_one_of(slurm, {"PENDING", "REQUEUED", "REQUEUE_HOLD", "REQUEUE_FED", "CONFIGURING",
                         "RESV_DEL_HOLD"}))
     return TaskCategory::kPending;
-  if (is_one_of(slurm, {"RUNNING", "COMPLETING", "STAGE_OUT", "SIGNALING", "RESIZING",
-                        "SUSPENDED", "STOPPED"}))
+  if (is_one_of(slurm, {"RUNNING", "COMPLETING", "STAGE_OUT", "SIGNALING", "RESIZING", "SUSPENDED",
+                        "STOPPED"}))
     return TaskCategory::kRunning;
   // Every other state has ended (COMPLETED without a finished run folder included).
   if (!slurm.empty()) return TaskCategory::kFailed;

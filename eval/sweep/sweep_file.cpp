@@ -58,8 +58,8 @@ class SweepReader : regress::YamlChecks {
     else
       sweep.variants = {Variant{"defaults", {}}};
     if (root["seeds"]) sweep.seeds = read_seeds(root["seeds"]);
-    sweep.rank_by = root["rank_by"] ? read_metrics(root["rank_by"]) : std::vector<std::string>{
-                                                                          "ate_rmse"};
+    sweep.rank_by =
+        root["rank_by"] ? read_metrics(root["rank_by"]) : std::vector<std::string>{"ate_rmse"};
     for (const Variant& v : sweep.variants) check_variant(v, !sweep.seeds.empty());
     return sweep;
   }

@@ -31,8 +31,8 @@ struct Sweep {
   std::filesystem::path file;
   std::string description;
   regress::Suite suite;
-  std::vector<Variant> variants;  // the grid's cross product or the named list, in file order
-  std::vector<uint64_t> seeds;    // empty: every run keeps the suite's own seeds
+  std::vector<Variant> variants;     // the grid's cross product or the named list, in file order
+  std::vector<uint64_t> seeds;       // empty: every run keeps the suite's own seeds
   std::vector<std::string> rank_by;  // tracked metric keys
 };
 

@@ -239,8 +239,8 @@ void write_html(const fs::path& file, const SweepResults& r, const SweepReportFi
   out << "<h1>Sweep report: " << escape_xml(sw.name) << "</h1>\n";
   if (!sw.description.empty()) out << "<p>" << escape_xml(sw.description) << "</p>\n";
   out << "<p class=\"meta\">" << escape_xml(shape_line(r)) << "</p>\n";
-  out << "<div class=\"banner " << (r.finished() == int(r.jobs.size()) ? "pass" : "fail")
-      << "\">" << escape_xml(headline(r)) << "</div>\n";
+  out << "<div class=\"banner " << (r.finished() == int(r.jobs.size()) ? "pass" : "fail") << "\">"
+      << escape_xml(headline(r)) << "</div>\n";
   out << "<h2>Best variant per metric</h2>\n";
   if (r.rankings.empty())
     out << "<p>No run finished for every variant yet: nothing to rank.</p>\n";
@@ -264,8 +264,8 @@ void write_html(const fs::path& file, const SweepResults& r, const SweepReportFi
 
 SweepReportFiles write_sweep_report(const SweepResults& r) {
   const fs::path dir = r.plan->dir;
-  SweepReportFiles files{dir / "report.md", dir / "report.html", dir / "runs.csv",
-                         dir / "ate_table.csv", {}};
+  SweepReportFiles files{
+      dir / "report.md", dir / "report.html", dir / "runs.csv", dir / "ate_table.csv", {}};
   write_runs_csv(files.runs_csv, r);
   write_ate_csv(files.ate_table, r);
   if (r.finished() > 0)

@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 namespace slamkit::test {
 
@@ -19,6 +21,12 @@ std::optional<std::filesystem::path> real_data(const std::string& relative) {
 bool running_under_ci() {
   const char* ci = std::getenv("CI");
   return ci && std::string(ci) == "true";
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
 }
 
 std::filesystem::path temp_dir(const std::string& tag) {

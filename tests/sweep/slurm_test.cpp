@@ -20,8 +20,9 @@ TEST(Slurm, ArraySpecsRoundTrip) {
 
 TEST(Slurm, ParsesSqueue) {
   // squeue -h -r --me -o '%F|%K|%T' with array 14 queued and another user's-style plain job.
-  const ArrayStates s = parse_squeue("14|0|RUNNING\n14|1|RUNNING\n14|2|PENDING\n14|3|PENDING\n"
-                                     "20|N/A|RUNNING\n");
+  const ArrayStates s = parse_squeue(
+      "14|0|RUNNING\n14|1|RUNNING\n14|2|PENDING\n14|3|PENDING\n"
+      "20|N/A|RUNNING\n");
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s.at("14").at(0), "RUNNING");
   EXPECT_EQ(s.at("14").at(3), "PENDING");

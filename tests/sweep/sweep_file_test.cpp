@@ -96,15 +96,15 @@ TEST(SweepFile, NamedVariantsWithNestedOrDottedKeys) {
   EXPECT_FALSE(desk.settings.orb.spread_over_image);
   EXPECT_EQ(desk.settings.tracking.point_to_plane.normal_smoothing_diameter, 0);
   EXPECT_EQ(desk.sequence.seed, 3u);  // no seeds: the suite's own
-  EXPECT_FALSE(variant_entry(sweep, sweep.suite.entries[0], sweep.variants[1], nullptr)
-                   .has_overrides);
+  EXPECT_FALSE(
+      variant_entry(sweep, sweep.suite.entries[0], sweep.variants[1], nullptr).has_overrides);
 }
 
 TEST(SweepFile, ASuiteFileRelativeToTheSweep) {
   Fixture f;
   f.write("entries:\n  - name: d\n    synthetic: {preset: desk, frames: 30}\n", "mine.yaml");
-  const Sweep sweep = load_sweep(f.write("suite: mine.yaml\ngrid: {orb.num_features: [300]}\n"),
-                                 f.context);
+  const Sweep sweep =
+      load_sweep(f.write("suite: mine.yaml\ngrid: {orb.num_features: [300]}\n"), f.context);
   EXPECT_EQ(sweep.suite.name, "mine");
   EXPECT_EQ(sweep.suite.entries.at(0).name, "d");
 }
@@ -119,13 +119,15 @@ TEST(SweepFile, ErrorsNameTheFileLineAndKey) {
             file + ":9: unknown setting 'orb.num_featurs'");
   EXPECT_EQ(f.error(head + "grid:\n  orb.num_features: []\n"),
             file + ":9: orb.num_features needs a non-empty list of values");
-  EXPECT_EQ(f.error(head + "variants:\n  - name: a\n    settings:\n      orb: {fast_type: fast7}\n"),
-            file + ":11: 'fast7' is not a value of orb.fast_type (fast9 or fast12)");
+  EXPECT_EQ(
+      f.error(head + "variants:\n  - name: a\n    settings:\n      orb: {fast_type: fast7}\n"),
+      file + ":11: 'fast7' is not a value of orb.fast_type (fast9 or fast12)");
   EXPECT_EQ(f.error(head + "variants:\n  - name: a\n    settings: {orb: {num_featurs: 5}}\n"),
             file + ":10: unknown setting 'orb.num_featurs'");
   EXPECT_EQ(f.error(head + "grid:\n  tracking.ransac.seed: [1, 2]\nseeds: [1]\n"),
-            file + ":9: tracking.ransac.seed is what the sweep's seeds set: drop it here or "
-                   "drop seeds");
+            file +
+                ":9: tracking.ransac.seed is what the sweep's seeds set: drop it here or "
+                "drop seeds");
   EXPECT_EQ(f.error(head + "seeds: [1, 1]\n"), file + ":8: seed 1 is listed twice");
   EXPECT_EQ(f.error(head + "rank_by: [ate]\n").rfind(file + ":8: unknown metric 'ate' (", 0), 0u);
   EXPECT_EQ(f.error(head + "grid: {orb.num_features: [1]}\nvariants: [{name: a}]\n"),
@@ -141,12 +143,6 @@ TEST(SweepFile, ErrorsNameTheFileLineAndKey) {
             file + ":1: suite file '" + (f.dir / "nowhere.yaml").string() + "' not found");
 }
 
-std::string read_file(const fs::path& file) {
-  std::stringstream text;
-  text << std::ifstream(file).rdbuf();
-  return text.str();
-}
-
 TEST(SweepPlan, WritesOnlyJobsTsvAndReadsItBack) {
   Fixture f;
   const fs::path sweep_file =
@@ -158,7 +154,7 @@ TEST(SweepPlan, WritesOnlyJobsTsvAndReadsItBack) {
   for (const auto& e : fs::directory_iterator(dir)) written.push_back(e.path().filename());
   EXPECT_EQ(written, std::vector<fs::path>{"jobs.tsv"});
 
-  const std::string tsv = read_file(dir / "jobs.tsv");
+  const std::string tsv = test::read_text(dir / "jobs.tsv");
   EXPECT_NE(tsv.find("# sweep\t" + sweep_file.string() + "\n"), std::string::npos);
   EXPECT_NE(tsv.find("index\tentry\tvariant\tseed\trun_folder\n"
                      "0\tdesk\tnum_features-500\t1\truns/num_features-500/desk/seed1\n"
