@@ -31,7 +31,9 @@ def main():
 
     fig, ax = plt.subplots(figsize=(max(5.0, 1.3 * len(sequences) + 3.0),
                                     max(2.5, 0.45 * len(variants) + 1.6)))
-    top = max(1.5, float(np.nanmax(ratio))) if np.isfinite(ratio).any() else 1.5
+    # The scale stops at 3x the best: one failed run (15x) would otherwise turn every 2x green.
+    worst = float(np.nanmax(ratio)) if np.isfinite(ratio).any() else 1.5
+    top = min(3.0, max(1.5, worst))
     image = ax.imshow(np.ma.masked_invalid(ratio), cmap="RdYlGn_r", vmin=1.0, vmax=top,
                       aspect="auto")
     ax.set_facecolor("#dddddd")
@@ -41,7 +43,7 @@ def main():
             text = "–" if math.isnan(ate[i, j]) else "%.2f" % (1000 * ate[i, j])
             weight = "bold" if not math.isnan(ate[i, j]) and ate[i, j] == best[j] else "normal"
             # The colour map's ends are dark: white text there.
-            shade = (ratio[i, j] - 1.0) / (top - 1.0) if np.isfinite(ratio[i, j]) else 0.5
+            shade = min(1.0, (ratio[i, j] - 1.0) / (top - 1.0)) if np.isfinite(ratio[i, j]) else 0.5
             colour = "white" if shade < 0.15 or shade > 0.85 else "black"
             ax.text(j, i, text, ha="center", va="center", fontsize=9, fontweight=weight,
                     color=colour)
@@ -51,7 +53,8 @@ def main():
     ax.set_ylabel("variant")
     ax.set_title("ATE RMSE [mm], mean over seeds%s\n(bold: best per sequence)"
                  % (" — " + args.title if args.title else ""))
-    fig.colorbar(image, ax=ax, label="ATE / best ATE of the sequence")
+    fig.colorbar(image, ax=ax, label="ATE / best ATE of the sequence",
+                 extend="max" if worst > top else "neither")
     save(fig, args.out, "ate_heatmap", args.pdf)
 
 

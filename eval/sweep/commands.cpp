@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "eval/regression/comparison.h"
 #include "eval/sweep/results.h"
 #include "eval/sweep/status.h"
 #include "eval/sweep/sweep_report.h"
@@ -166,10 +165,10 @@ int collect_sweep(const fs::path& dir, const SweepEnvironment& env) {
   for (const Ranking& k : results.rankings) {
     const VariantScore& best = k.scores.front();
     std::printf("best        %s: %s (%s", k.metric->label.c_str(), best.variant.c_str(),
-                regress::format_value(*k.metric, best.mean).c_str());
+                mean_text(*k.metric, best.mean).c_str());
     if (k.scores.size() > 1)
       std::printf("; runner-up %s %s", k.scores[1].variant.c_str(),
-                  regress::format_value(*k.metric, k.scores[1].mean).c_str());
+                  mean_text(*k.metric, k.scores[1].mean).c_str());
     std::printf("; mean of %d runs each)\n", k.pairs);
   }
   print_unfinished(plan, results.status);

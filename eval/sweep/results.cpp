@@ -1,9 +1,11 @@
 #include "eval/sweep/results.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "core/error.h"
+#include "eval/regression/comparison.h"
 
 namespace slamkit::sweep {
 namespace {
@@ -86,6 +88,13 @@ Ranking rank_variants(const SweepResults& results, const regress::MetricInfo& me
                      return metric.higher_is_better ? a.mean > b.mean : a.mean < b.mean;
                    });
   return ranking;
+}
+
+std::string mean_text(const regress::MetricInfo& metric, double mean) {
+  if (metric.unit != "frames") return regress::format_value(metric, mean);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f frames", mean);
+  return text;
 }
 
 }  // namespace slamkit::sweep

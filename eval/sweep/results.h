@@ -49,4 +49,8 @@ SweepResults collect_results(const Plan& plan, const SweepStatus& status);
 
 Ranking rank_variants(const SweepResults& results, const regress::MetricInfo& metric);
 
+// A mean of a metric as text: as the regression report writes values, but counts of frames with
+// two decimals (a mean of 0.25 lost frames is not 0).
+std::string mean_text(const regress::MetricInfo& metric, double mean);
+
 }  // namespace slamkit::sweep

@@ -86,15 +86,15 @@ Table ranking_table(const SweepResults& r) {
   for (const Ranking& k : r.rankings) {
     const MetricInfo& m = *k.metric;
     const VariantScore& best = k.scores.front();
-    std::vector<std::string> row = {m.label, best.variant, regress::format_value(m, best.mean)};
+    std::vector<std::string> row = {m.label, best.variant, mean_text(m, best.mean)};
     if (k.scores.size() > 1) {
       const VariantScore& next = k.scores[1];
       regress::MetricComparison margin;
       margin.metric = &m;
       margin.value = next.mean;
       margin.baseline = best.mean;
-      row.insert(row.end(), {next.variant, regress::format_value(m, next.mean),
-                             regress::format_delta(margin)});
+      row.insert(row.end(), {next.variant, mean_text(m, next.mean),
+                             next.mean == best.mean ? "tie" : regress::format_delta(margin)});
     } else {
       row.insert(row.end(), {"–", "–", "–"});
     }
