@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <iostream>
 
 extern char** environ;
 
@@ -53,6 +54,26 @@ std::filesystem::path plot_script(const std::string& name) {
   const char* env = std::getenv("SLAMKIT_EVAL_SCRIPTS");
   const std::filesystem::path dir = env && *env ? env : SLAMKIT_EVAL_SCRIPT_DIR;
   return dir / name;
+}
+
+std::optional<std::filesystem::path> draw_plot(const std::string& script,
+                                               const std::vector<std::string>& args,
+                                               const std::filesystem::path& png,
+                                               const std::string& what) {
+  const PlotPython python = find_plot_python();
+  if (!python.interpreter) {
+    std::cerr << "slamkit: note: no " << what << " drawn: " << python.problem << "\n";
+    return std::nullopt;
+  }
+  std::vector<std::string> full = {plot_script(script).string()};
+  full.insert(full.end(), args.begin(), args.end());
+  const int code = run_program(*python.interpreter, full);
+  if (code != 0 || !std::filesystem::exists(png)) {
+    std::cerr << "slamkit: note: no " << what << " drawn: " << script << " failed (exit code "
+              << code << ")\n";
+    return std::nullopt;
+  }
+  return png;
 }
 
 }  // namespace slamkit::eval

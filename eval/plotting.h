@@ -26,4 +26,12 @@ std::filesystem::path plot_script(const std::string& name);
 int run_program(const std::string& interpreter, const std::vector<std::string>& args,
                 bool silence_output = false);
 
+// Runs the plot script `script` (plot_script) with `args` under find_plot_python(). Returns
+// `png` once it exists, else nothing, with a note on stderr saying why no `what` was drawn
+// (no interpreter with matplotlib, or the script failed).
+std::optional<std::filesystem::path> draw_plot(const std::string& script,
+                                               const std::vector<std::string>& args,
+                                               const std::filesystem::path& png,
+                                               const std::string& what);
+
 }  // namespace slamkit::eval

@@ -4,17 +4,25 @@
 #   scripts/setup.sh            # install what is missing, configure, build (Release)
 #   --test-tools                # also clang 14 and libFuzzer, for scripts/fuzz.sh and the
 #                               # sanitizer build (scripts/test.sh asks for them under CI)
+#   --with-slurm                # also Slurm, slurmdbd, munge and MariaDB's server binary, for
+#                               # the loopback Slurm test (scripts/slurm_loopback.sh; asked
+#                               # for by scripts/test.sh under CI)
 #   --packages-only             # install, do not build
 # Environment: SLAMKIT_BUILD_DIR (default: build/ in the repository).
 set -euo pipefail
 
 test_tools=false
+with_slurm=false
 build=true
 for arg in "$@"; do
   case "$arg" in
     --test-tools) test_tools=true ;;
+    --with-slurm) with_slurm=true ;;
     --packages-only) build=false ;;
-    *) echo "setup: unknown option '$arg' (--test-tools, --packages-only)" >&2; exit 2 ;;
+    *)
+      echo "setup: unknown option '$arg' (--test-tools, --with-slurm, --packages-only)" >&2
+      exit 2
+      ;;
   esac
 done
 
@@ -30,6 +38,11 @@ packages=(
 )
 if $test_tools; then
   packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev)
+fi
+if $with_slurm; then
+  # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)
+  # with the MariaDB server it stores into, and munge for authentication.
+  packages+=(slurm-wlm slurmdbd munge mariadb-server-core)
 fi
 
 missing=()

@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Sets up (scripts/setup.sh) and runs the whole test suite with ctest.
 # Real-data tests read SLAMKIT_DATA (a folder with the TUM sequences and trajectories); without
-# it they are skipped with a message, except under CI=true where they fail.
-# Under CI=true it then runs the fast suites under ASan+UBSan (scripts/sanitize.sh) and a short
-# fuzz pass over every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per target, default 15).
+# it they are skipped with a message, except under CI=true where they fail. The same goes for the
+# loopback Slurm test.
+# Under CI=true setup also installs the test tools (clang and libFuzzer, Slurm), and after ctest
+# the fast suites run under ASan+UBSan (scripts/sanitize.sh) and a short fuzz pass goes over
+# every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per target, default 15).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 ci=false
 [[ "${CI:-}" == "true" ]] && ci=true
 if $ci; then
-  "$root/scripts/setup.sh" --test-tools  # clang and libFuzzer for the fuzz pass
+  "$root/scripts/setup.sh" --test-tools --with-slurm
 else
   "$root/scripts/setup.sh"
 fi

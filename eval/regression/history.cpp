@@ -1,6 +1,5 @@
 // history.csv and the plots drawn with eval's scripts.
 #include <fstream>
-#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -35,24 +34,6 @@ std::string field(std::string text) {
   for (char& c : text)
     if (c == ',' || c == '\n' || c == '"') c = ' ';
   return text;
-}
-
-std::optional<fs::path> draw(const std::string& script, const std::vector<std::string>& args,
-                             const fs::path& png, const std::string& what) {
-  const eval::PlotPython python = eval::find_plot_python();
-  if (!python.interpreter) {
-    std::cerr << "slamkit: note: no " << what << " drawn: " << python.problem << "\n";
-    return std::nullopt;
-  }
-  std::vector<std::string> full = {eval::plot_script(script).string()};
-  full.insert(full.end(), args.begin(), args.end());
-  const int code = eval::run_program(*python.interpreter, full);
-  if (code != 0 || !fs::exists(png)) {
-    std::cerr << "slamkit: note: no " << what << " drawn: " << script << " failed (exit code "
-              << code << ")\n";
-    return std::nullopt;
-  }
-  return png;
 }
 
 }  // namespace
@@ -95,12 +76,13 @@ std::optional<fs::path> draw_comparison(const SuiteReport& report) {
       ++runs;
     }
   if (runs == 0) return std::nullopt;
-  return draw("plot_compare.py", args, report.out / "ate_comparison.png", "comparison plot");
+  return eval::draw_plot("plot_compare.py", args, report.out / "ate_comparison.png",
+                         "comparison plot");
 }
 
 std::optional<fs::path> draw_history(const fs::path& history, const SuiteReport& report) {
   if (!fs::exists(history)) return std::nullopt;
-  return draw(
+  return eval::draw_plot(
       "plot_history.py",
       {"--history", history.string(), "--suite", report.suite->name, "--out", report.out.string()},
       report.out / "ate_history.png", "history plot");

@@ -14,15 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> tum_names(const fs::path& script) {
-  const auto listed = capture_output("bash", {script.string(), "--list"});
-  if (!listed) throw_input_error(script.string(), "cannot list the TUM sequence names");
-  std::vector<std::string> names;
-  std::stringstream text(*listed);
-  for (std::string name; text >> name;) names.push_back(name);
-  return names;
-}
-
 EntryResult evaluate_entry(const SuiteEntry& entry, const EntryRun& run,
                            const fs::path& baselines) {
   EntryResult r;
@@ -98,6 +89,15 @@ void print_summary(const SuiteReport& report) {
 }
 
 }  // namespace
+
+std::vector<std::string> tum_names(const fs::path& script) {
+  const auto listed = capture_output("bash", {script.string(), "--list"});
+  if (!listed) throw_input_error(script.string(), "cannot list the TUM sequence names");
+  std::vector<std::string> names;
+  std::stringstream text(*listed);
+  for (std::string name; text >> name;) names.push_back(name);
+  return names;
+}
 
 fs::path default_download_script() {
   const char* env = std::getenv("SLAMKIT_DOWNLOAD_SCRIPT");

@@ -30,5 +30,7 @@ int run_regression(const RegressOptions& options);
 
 // datasets/download_tum.sh in the source tree, or $SLAMKIT_DOWNLOAD_SCRIPT.
 std::filesystem::path default_download_script();
+// The TUM sequence names the download script knows (its --list).
+std::vector<std::string> tum_names(const std::filesystem::path& script);
 
 }  // namespace slamkit::regress

@@ -1,5 +1,7 @@
 #include "eval/regression/runner.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -7,6 +9,7 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <thread>
 
 #include "core/error.h"
@@ -60,42 +63,60 @@ std::string sequence_key(const SequenceSource& s) {
   return s.folder.string();
 }
 
-// A synthetic sequence is rendered once per output folder (a marker says it is whole); a TUM
-// sequence goes through the download script, which fetches, checks and skips what is there.
+// A synthetic sequence is rendered once per output folder, into a folder of its own that is then
+// renamed into place: the rename is the commit, so tasks on several machines may render the
+// same sequence at once (a sweep on a cluster) and one copy wins. A TUM sequence goes through
+// the download script, which fetches, checks and skips what is there.
 struct SequenceJob {
   SequenceSource source;
   fs::path folder;
   std::string error;
 };
 
+std::string host_and_pid() {
+  char host[256] = "host";
+  gethostname(host, sizeof host - 1);
+  return std::string(host) + "." + std::to_string(getpid());
+}
+
+void render_synthetic(SequenceJob& job, const RunnerOptions& options, int threads) {
+  const SequenceSource& s = job.source;
+  const fs::path dir = options.out / "sequences";
+  const std::string name = sequence_key(s);
+  job.folder = dir / name;
+  if (fs::exists(job.folder)) return;
+  const fs::path temp = dir / (name + ".tmp." + host_and_pid());
+  const fs::path log = temp.string() + ".log";
+  fs::remove_all(temp);
+  say("render      %s\n", s.describe());
+  const int code = run_logged(
+      options.slamkit.string(),
+      {"synth", "--preset", s.preset, "--frames", std::to_string(s.frames), "--seed",
+       std::to_string(s.seed), "--threads", std::to_string(threads), "--out", temp.string()},
+      log);
+  if (code != 0) {
+    job.error =
+        "rendering failed (exit code " + std::to_string(code) + "; see " + log.string() + ")";
+    return;
+  }
+  std::error_code lost_race;
+  fs::rename(temp, job.folder, lost_race);
+  if (lost_race) {
+    if (!fs::exists(job.folder))
+      throw fs::filesystem_error("cannot rename", temp, job.folder, lost_race);
+    fs::remove_all(temp);  // another task's copy is in place: the same pixels
+  }
+  fs::rename(log, dir / (name + ".log"), lost_race);
+}
+
 void prepare_sequence(SequenceJob& job, const RunnerOptions& options, int threads) {
   const SequenceSource& s = job.source;
-  const fs::path logs = options.out / "sequences";
-  fs::create_directories(logs);
+  fs::create_directories(options.out / "sequences");
   if (s.kind == SequenceSource::Kind::kSynthetic) {
-    const std::string name = sequence_key(s);
-    job.folder = logs / name;
-    const fs::path marker = logs / (name + ".complete");
-    if (fs::exists(marker) && fs::exists(job.folder)) return;
-    fs::remove_all(job.folder);
-    const fs::path log = logs / (name + ".log");
-    fs::remove(log);
-    say("render      %s\n", s.describe());
-    const int code =
-        run_logged(options.slamkit.string(),
-                   {"synth", "--preset", s.preset, "--frames", std::to_string(s.frames), "--seed",
-                    std::to_string(s.seed), "--threads", std::to_string(threads), "--out",
-                    job.folder.string()},
-                   log);
-    if (code != 0) {
-      job.error =
-          "rendering failed (exit code " + std::to_string(code) + "; see " + log.string() + ")";
-      return;
-    }
-    write_atomically(marker, s.describe() + "\n");
+    render_synthetic(job, options, threads);
   } else if (s.kind == SequenceSource::Kind::kTum) {
     job.folder = s.folder;
-    const fs::path log = logs / (s.tum_name + ".download.log");
+    const fs::path log = options.out / "sequences" / (s.tum_name + ".download.log");
     fs::remove(log);
     say("fetch       %s into %s\n", s.tum_name, s.folder.parent_path().string());
     const int code = run_logged(
@@ -115,16 +136,18 @@ std::string read_text(const fs::path& file) {
   return text;
 }
 
-void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::string& binary_hash,
-               const RunnerOptions& options, int threads, EntryRun& run) {
-  run.dir = options.out / "runs" / entry.name;
+void run_request(const RunRequest& request, const fs::path& sequence,
+                 const std::string& binary_hash, const RunnerOptions& options, int threads,
+                 EntryRun& run) {
+  const SuiteEntry& entry = *request.entry;
+  run.dir = request.dir;
   std::vector<std::string> args = {"run",       sequence.string(),      "--out", run.dir.string(),
                                    "--threads", std::to_string(threads)};
   // What the run depends on besides the sequence: the settings and the executable.
   std::string fingerprint =
       entry.sequence.describe() + " | " + sequence.string() + " | slamkit " + binary_hash;
   if (entry.has_overrides) {
-    const fs::path settings = options.out / "settings" / (entry.name + ".yaml");
+    const fs::path& settings = request.settings_file;
     write_settings_yaml(settings, entry.settings);
     fingerprint += " | settings " + eval::fnv1a64_file(settings);
     args.insert(args.end(), {"--settings", settings.string()});
@@ -146,7 +169,7 @@ void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::str
         run.ok = run.reused = true;
         run.finished = done.value("finished", "");
         run.seconds = done.value("seconds", 0.0);
-        say("reuse       %s (finished %s)\n", entry.name, run.finished);
+        say("reuse       %s (finished %s)\n", request.label, run.finished);
         return;
       }
     } catch (const json::exception&) {
@@ -158,14 +181,14 @@ void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::str
   fs::remove_all(run.dir);
   fs::create_directories(run.dir);
   const fs::path log = run.dir / "run.log";
-  say("run         %s (log %s)\n", entry.name, log.string());
+  say("run         %s (log %s)\n", request.label, log.string());
   const auto start = std::chrono::steady_clock::now();
   const int code = run_logged(options.slamkit.string(), args, log);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (code != 0) {
     run.error =
         "slamkit run exited with code " + std::to_string(code) + " (see " + log.string() + ")";
-    say("FAILED      %s: %s\n", entry.name, run.error);
+    say("FAILED      %s: %s\n", request.label, run.error);
     return;
   }
   run.ok = true;
@@ -178,20 +201,21 @@ void run_entry(const SuiteEntry& entry, const fs::path& sequence, const std::str
   write_atomically(marker, done.dump(2) + "\n");
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f", run.seconds);
-  say("done        %s in %s s\n", entry.name, seconds);
+  say("done        %s in %s s\n", request.label, seconds);
 }
 
 }  // namespace
 
-std::vector<EntryRun> run_entries(const Suite& suite, const RunnerOptions& options) {
+std::vector<EntryRun> run_requests(const std::vector<RunRequest>& requests,
+                                   const RunnerOptions& options) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = options.threads > 0 ? options.threads : std::max(1, cores / options.jobs);
 
   std::map<std::string, size_t> index;
   std::vector<SequenceJob> sequences;
-  for (const SuiteEntry& e : suite.entries)
-    if (index.emplace(sequence_key(e.sequence), sequences.size()).second)
-      sequences.push_back({e.sequence, {}, {}});
+  for (const RunRequest& r : requests)
+    if (index.emplace(sequence_key(r.entry->sequence), sequences.size()).second)
+      sequences.push_back({r.entry->sequence, {}, {}});
   parallel_for(sequences.size(), options.jobs, [&](size_t i) {
     try {
       prepare_sequence(sequences[i], options, threads);
@@ -201,23 +225,44 @@ std::vector<EntryRun> run_entries(const Suite& suite, const RunnerOptions& optio
   });
 
   const std::string binary_hash = eval::fnv1a64_file(options.slamkit);
-  std::vector<EntryRun> runs(suite.entries.size());
+  std::vector<EntryRun> runs(requests.size());
   parallel_for(runs.size(), options.jobs, [&](size_t i) {
-    const SuiteEntry& entry = suite.entries[i];
-    const SequenceJob& sequence = sequences[index.at(sequence_key(entry.sequence))];
-    runs[i].dir = options.out / "runs" / entry.name;
+    const RunRequest& request = requests[i];
+    const SequenceJob& sequence = sequences[index.at(sequence_key(request.entry->sequence))];
+    runs[i].dir = request.dir;
     if (!sequence.error.empty()) {
       runs[i].error = sequence.error;
       return;
     }
     try {
-      run_entry(entry, sequence.folder, binary_hash, options, threads, runs[i]);
+      run_request(request, sequence.folder, binary_hash, options, threads, runs[i]);
     } catch (const std::exception& e) {
       runs[i].ok = false;
       runs[i].error = e.what();
     }
   });
   return runs;
+}
+
+std::vector<EntryRun> run_entries(const Suite& suite, const RunnerOptions& options) {
+  std::vector<RunRequest> requests;
+  for (const SuiteEntry& e : suite.entries)
+    requests.push_back(
+        {&e, e.name, options.out / "runs" / e.name, options.out / "settings" / (e.name + ".yaml")});
+  return run_requests(requests, options);
+}
+
+std::string fetch_tum_sequences(const std::vector<RunRequest>& requests,
+                                const RunnerOptions& options) {
+  std::set<std::string> fetched;
+  for (const RunRequest& r : requests) {
+    if (r.entry->sequence.kind != SequenceSource::Kind::kTum) continue;
+    if (!fetched.insert(r.entry->sequence.tum_name).second) continue;
+    SequenceJob job{r.entry->sequence, {}, {}};
+    prepare_sequence(job, options, 1);
+    if (!job.error.empty()) return job.error;
+  }
+  return "";
 }
 
 }  // namespace slamkit::regress

@@ -1,15 +1,14 @@
 #include "eval/regression/suite.h"
 
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <fstream>
+#include <cstdio>
 #include <set>
 
 #include "core/error.h"
 #include "eval/regression/metrics.h"
+#include "eval/regression/yaml_checks.h"
 #include "io/settings_yaml.h"
 #include "io/tum_sequence.h"
 #include "io/yaml_file.h"
@@ -19,17 +18,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SuiteReader {
+class SuiteReader : YamlChecks {
  public:
   SuiteReader(const fs::path& file, const SuiteContext& context)
-      : path_(file.string()), dir_(file.parent_path()), context_(context) {}
+      : YamlChecks(file.string()), dir_(file.parent_path()), context_(context) {}
 
   Suite read(const YAML::Node& root) {
     Suite suite;
-    suite.file = path_;
+    suite.file = path();
     if (!root.IsMap()) fail(root, "expected a map with 'entries'");
     check_keys(root, {"suite", "description", "settings", "tolerances", "entries"});
-    suite.name = root["suite"] ? scalar(root["suite"], "suite") : fs::path(path_).stem().string();
+    suite.name = root["suite"] ? scalar(root["suite"], "suite") : fs::path(path()).stem().string();
     check_name(root["suite"] ? root["suite"] : root, suite.name, "suite name");
     if (root["description"]) suite.description = scalar(root["description"], "description");
 
@@ -146,7 +145,8 @@ class SuiteReader {
   }
 
   // `settings:` is a settings file (relative to the suite) or a map of inline keys; both are
-  // read by the settings reader itself, so its checks (unknown keys, types) apply unchanged.
+  // read by the settings reader itself, so its checks (unknown keys, types, ranges) apply
+  // unchanged, inline ones at the suite's lines.
   bool apply_settings(const YAML::Node& node, Settings& settings) {
     if (node.IsScalar()) {
       const fs::path file = relative_to_suite(node.Scalar());
@@ -155,68 +155,14 @@ class SuiteReader {
       return true;
     }
     if (!node.IsMap()) fail(node, "settings must be a file name or a map of settings");
-    std::string text;
-    std::vector<int> lines;
-    emit_block(node, 0, text, lines);
-    read_inline_settings(text, lines, settings);
+    read_settings_node(node, path(), settings);
     return true;
-  }
-
-  // The map as block YAML, one key a line, with the suite line of each written line.
-  static void emit_block(const YAML::Node& map, int indent, std::string& text,
-                         std::vector<int>& lines) {
-    for (const auto& kv : map) {
-      YAML::Emitter key;
-      key << kv.first;
-      text += std::string(size_t(indent), ' ') + key.c_str() + ":";
-      lines.push_back(kv.first.Mark().line + 1);
-      if (kv.second.IsMap() && kv.second.size() > 0) {
-        text += "\n";
-        emit_block(kv.second, indent + 2, text, lines);
-      } else {
-        YAML::Emitter value;
-        value << YAML::Flow << kv.second;
-        text += std::string(" ") + value.c_str() + "\n";
-      }
-    }
-  }
-
-  // Reads the inline keys through a temporary file; an error there is reported at the suite's
-  // line.
-  void read_inline_settings(const std::string& text, const std::vector<int>& lines,
-                            Settings& settings) {
-    std::string temp = (fs::temp_directory_path() / "slamkit_suite_settings_XXXXXX").string();
-    const int fd = mkstemp(temp.data());
-    if (fd < 0) throw_input_error(temp, "cannot create a temporary file");
-    close(fd);
-    std::ofstream(temp) << text;
-    try {
-      read_settings_yaml(temp, settings);
-    } catch (const InputError& e) {
-      fs::remove(temp);
-      std::string message = e.what();
-      int line = 0;
-      const std::string prefix = temp + ":";
-      if (message.rfind(prefix, 0) == 0) {
-        message = message.substr(prefix.size());
-        const size_t colon = message.find(':');
-        if (colon != std::string::npos && colon > 0 &&
-            std::all_of(message.begin(), message.begin() + long(colon), ::isdigit)) {
-          const size_t at = size_t(std::stoi(message.substr(0, colon)));
-          if (at >= 1 && at <= lines.size()) line = lines[at - 1];
-          message = message.substr(colon + 1);
-        }
-      }
-      while (!message.empty() && message[0] == ' ') message.erase(0, 1);
-      throw_input_error(path_, line, "settings: " + message);
-    }
-    fs::remove(temp);
   }
 
   void read_tolerances(const YAML::Node& node, std::map<std::string, Tolerance>& tolerances) {
     if (!node.IsMap()) fail(node, "tolerances must be a map: metric: {abs: A, rel: R}");
     for (const auto& kv : node) {
-      const std::string key = scalar_text(kv.first, path_, "a metric name");
+      const std::string key = scalar_text(kv.first, path(), "a metric name");
       if (!find_metric(key)) {
         std::string list;
         for (const MetricInfo& m : tracked_metrics()) list += (list.empty() ? "" : ", ") + m.key;
@@ -230,59 +176,10 @@ class SuiteReader {
     }
   }
 
-  void check_keys(const YAML::Node& map, std::initializer_list<const char*> allowed) const {
-    for (const auto& kv : map) {
-      const std::string key = scalar_text(kv.first, path_, "a key");
-      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
-        std::string list;
-        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-        fail(kv.first, "unknown key '" + key + "' (expected " + list + ")");
-      }
-    }
-  }
-
-  // Names become folder and file names.
-  void check_name(const YAML::Node& at, const std::string& name, const std::string& what) const {
-    const bool ok =
-        !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](char c) {
-          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-        });
-    if (!ok) fail(at, what + " '" + name + "' may hold only letters, digits, '_', '-' and '.'");
-  }
-
-  std::string scalar(const YAML::Node& node, const std::string& what) const {
-    if (!node.IsScalar() || node.Scalar().empty()) fail(node, what + " must be a non-empty value");
-    return node.Scalar();
-  }
-  double number(const YAML::Node& node, const std::string& what) const {
-    try {
-      return node.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(node, what + " must be a number");
-    }
-  }
-  double non_negative(const YAML::Node& node, const std::string& what) const {
-    const double v = number(node, what);
-    if (!(v >= 0)) fail(node, what + " must be zero or positive");
-    return v;
-  }
-  long long integer(const YAML::Node& node, const std::string& what) const {
-    try {
-      return node.as<long long>();
-    } catch (const YAML::Exception&) {
-      fail(node, what + " must be an integer");
-    }
-  }
-
   fs::path relative_to_suite(const fs::path& path) const {
     return path.is_relative() ? dir_ / path : path;
   }
 
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
-    throw_input_error(path_, at.Mark().line + 1, message);
-  }
-
-  std::string path_;
   fs::path dir_;
   const SuiteContext& context_;
 };
@@ -313,7 +210,10 @@ std::string SequenceSource::describe() const {
 }
 
 Suite load_suite(const fs::path& file, const SuiteContext& context) {
-  const YAML::Node root = load_yaml_file(file, "suite file");
+  return read_suite_node(load_yaml_file(file, "suite file"), file, context);
+}
+
+Suite read_suite_node(const YAML::Node& root, const fs::path& file, const SuiteContext& context) {
   return SuiteReader(file, context).read(root);
 }
 

@@ -3,6 +3,8 @@
 // metric may move from its baseline. Read and checked whole before anything runs, so a typo
 // costs nothing: bad keys, missing sequences and unknown names are InputErrors naming the
 // suite file and line. The format is documented in results/README.md.
+#include <yaml-cpp/yaml.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -69,5 +71,9 @@ struct SuiteContext {
 };
 
 Suite load_suite(const std::filesystem::path& file, const SuiteContext& context);
+// A suite written inside another YAML file (a sweep's `suite:` map), read the same way: errors
+// name `file` and the lines there; relative paths are relative to it.
+Suite read_suite_node(const YAML::Node& root, const std::filesystem::path& file,
+                      const SuiteContext& context);
 
 }  // namespace slamkit::regress

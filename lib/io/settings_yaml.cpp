@@ -119,16 +119,74 @@ class YamlReader {
   std::set<std::string> known_;
 };
 
+// Whether a dotted name ("orb.num_features") is a settings field: walks the fields like the
+// reader, comparing names instead of reading values.
+class FieldFinder {
+ public:
+  explicit FieldFinder(const std::string& dotted) : dotted_(dotted) {}
+
+  template <class T>
+  void field(const char* name, T&, const Range& = {}) {
+    found_ = found_ || prefix_ + name == dotted_;
+  }
+
+  template <class S>
+  void section(const char* name, S& settings) {
+    const std::string outer = prefix_;
+    prefix_ += std::string(name) + ".";
+    if (dotted_.rfind(prefix_, 0) == 0) visit_fields(settings, *this);
+    prefix_ = outer;
+  }
+
+  bool found() const { return found_; }
+
+ private:
+  const std::string& dotted_;
+  std::string prefix_;
+  bool found_ = false;
+};
+
 }  // namespace
+
+void read_settings_node(const YAML::Node& root, const std::string& file, Settings& settings) {
+  if (root.IsNull()) return;  // nothing set: all defaults
+  if (!root.IsMap())
+    throw_input_error(file, root.Mark().line + 1, "expected a YAML map of settings sections");
+  YamlReader reader(root, "", file);
+  visit_fields(settings, reader);
+  reader.reject_unknown_keys();
+}
 
 void read_settings_yaml(const std::filesystem::path& path, Settings& settings) {
   const std::string name = path.string();
   const YAML::Node root = load_yaml_file(path, "settings file");
-  if (root.IsNull()) return;  // an empty file: all defaults
-  if (!root.IsMap()) throw_input_error(name, "expected a YAML map of settings sections");
-  YamlReader reader(root, "", name);
-  visit_fields(settings, reader);
-  reader.reject_unknown_keys();
+  if (!root.IsNull() && !root.IsMap())
+    throw_input_error(name, "expected a YAML map of settings sections");
+  read_settings_node(root, name, settings);
+}
+
+bool is_setting(const std::string& dotted_name) {
+  FieldFinder finder(dotted_name);
+  Settings defaults;
+  visit_fields(defaults, finder);
+  return finder.found();
+}
+
+void apply_setting(const std::string& dotted_name, const YAML::Node& value, const std::string& file,
+                   int line, Settings& settings) {
+  if (!is_setting(dotted_name))
+    throw_input_error(file, line, "unknown setting '" + dotted_name + "'");
+  // The value node keeps its place in the file, so the reader's range and type errors name it.
+  YAML::Node root(YAML::NodeType::Map);
+  YAML::Node at = root;
+  size_t start = 0;
+  for (size_t dot; (dot = dotted_name.find('.', start)) != std::string::npos; start = dot + 1) {
+    YAML::Node section(YAML::NodeType::Map);
+    at[dotted_name.substr(start, dot - start)] = section;
+    at.reset(section);
+  }
+  at[dotted_name.substr(start)] = value;
+  read_settings_node(root, file, settings);
 }
 
 std::string settings_yaml_text(const Settings& settings) {

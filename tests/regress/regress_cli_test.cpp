@@ -18,12 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& file) {
-  std::stringstream text;
-  text << std::ifstream(file).rdbuf();
-  return text.str();
-}
-
 const char* kTinySuite = R"(suite: tiny
 description: two short synthetic sequences for the tests
 entries:
@@ -35,7 +29,7 @@ entries:
 
 // The report without what changes from run to run: the date line and the timing rows.
 std::string stable_report(const fs::path& file) {
-  std::stringstream in(read_file(file)), out;
+  std::stringstream in(test::read_text(file)), out;
   for (std::string line; std::getline(in, line);)
     if (line.find("run time") == std::string::npos && line.find("frames/s") == std::string::npos &&
         line.rfind("Suite `", 0) != 0)
@@ -125,7 +119,7 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
       run_regress(suite.string() + " --out " + (dir / "first").string() + " --update-baselines",
                   &output),
       0);
-  const std::string baseline = read_file(dir / "baselines" / "tiny" / "desk.json");
+  const std::string baseline = test::read_text(dir / "baselines" / "tiny" / "desk.json");
   for (const char* key : {"\"version\"", "\"settings_hash\"", "\"machine\"", "\"date\"",
                           "\"ate_rmse\"", "\"frames_lost\"", "\"map_completeness\""})
     EXPECT_NE(baseline.find(key), std::string::npos) << key;
@@ -135,10 +129,10 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     const fs::path out = dir / "first";
     EXPECT_EQ(run_regress(suite.string() + " --out " + out.string(), &output), 0);
     EXPECT_NE(output.find("reuse       desk"), std::string::npos);
-    EXPECT_NE(read_file(out / "report.md").find("**PASS: 2 entries"), std::string::npos);
+    EXPECT_NE(test::read_text(out / "report.md").find("**PASS: 2 entries"), std::string::npos);
     EXPECT_EQ(junit_failures(out / "junit.xml"), 0);
     // Self-contained: every plot embedded, nothing fetched.
-    const std::string html = read_file(out / "report.html");
+    const std::string html = test::read_text(out / "report.html");
     size_t images = 0;
     for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos;
          ++at)
@@ -146,7 +140,7 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     EXPECT_GE(images, 5u);  // error over time and trajectory per entry, the box plot, history
     EXPECT_EQ(html.find("http"), std::string::npos);
     // history.csv: a line per run, not per invocation.
-    const std::string history = read_file(dir / "history.csv");
+    const std::string history = test::read_text(dir / "history.csv");
     EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
   }
   {
@@ -161,13 +155,14 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
                     &output),
         1);
     EXPECT_NE(output.find("REGRESSED   jerk: ATE RMSE"), std::string::npos);
-    const std::string report = read_file(out / "report.md");
+    const std::string report = test::read_text(out / "report.md");
     EXPECT_NE(report.find("**FAIL:"), std::string::npos);
     EXPECT_NE(report.find("| jerk | synthetic jerk, 50 frames, seed 1 | REGRESSED |"),
               std::string::npos);
     EXPECT_NE(report.find("| **REGRESSED** |"), std::string::npos);
     EXPECT_GT(junit_failures(out / "junit.xml"), 0);
-    EXPECT_NE(read_file(out / "report.html").find("class=\"fail\">REGRESSED"), std::string::npos);
+    EXPECT_NE(test::read_text(out / "report.html").find("class=\"fail\">REGRESSED"),
+              std::string::npos);
   }
   {
     SCOPED_TRACE("killed after its first entry, the suite resumes with the same report");

@@ -95,7 +95,7 @@ TEST(Suite, ErrorsNameTheFileAndLine) {
   // Inline settings are checked by the settings reader, at the suite's line.
   EXPECT_EQ(
       f.error(head + "    folder: seq_a\n    settings:\n      orb:\n        num_featurs: 5\n"),
-      file + ":6: settings: unknown setting 'orb.num_featurs'");
+      file + ":6: unknown setting 'orb.num_featurs'");
   EXPECT_NE(f.error(head + "    folder: seq_a\n    tolerances: {ate_rsme: {abs: 1}}\n")
                 .find(file + ":4: unknown metric 'ate_rsme'"),
             std::string::npos);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 namespace slamkit::test {
 
@@ -21,6 +22,12 @@ std::optional<std::filesystem::path> real_data(const std::string& relative) {
 bool running_under_ci() {
   const char* ci = std::getenv("CI");
   return ci && std::string(ci) == "true";
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
 }
 
 std::filesystem::path temp_dir(const std::string& tag) {

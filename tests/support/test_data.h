@@ -15,6 +15,9 @@ std::optional<std::filesystem::path> real_data(const std::string& relative);
 
 bool running_under_ci();
 
+// The whole text of a file ("" when it cannot be read).
+std::string read_text(const std::filesystem::path& file);
+
 // A fresh empty folder under the system temp dir, unique per test.
 std::filesystem::path temp_dir(const std::string& tag);
 
