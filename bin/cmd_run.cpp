@@ -24,6 +24,7 @@ struct RunArgs {
   int threads = -1;
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
+  bool plot = true;
   bool ascii = false;
   SequenceOptions sequence;
 };
@@ -95,7 +96,7 @@ void run(const RunArgs& args) {
   print_tracking_summary(seq, result);
   print_back_end_summary(seq, settings, result);
   if (settings.pipeline.evaluate) {
-    evaluate_run_folder(seq, args.out);
+    evaluate_run_folder(seq, args.out, args.plot);
     if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
   }
   write_run_status(started, result.seconds);
@@ -117,6 +118,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   add_lost_frames_option(cmd, args->lost_frames);
+  cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { run(*args); });
