@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/stopwatch.h"
@@ -54,24 +55,23 @@ bool same(const cv::Mat& a, const cv::Mat& b) {
   return a.type() == b.type() && a.size() == b.size() && cv::norm(a, b, cv::NORM_INF) == 0;
 }
 
-struct Measurement {
-  double ms_per_frame = 0;
-  bool identical = true;
-};
-
-Measurement measure(const bench::PngCandidate& candidate, const FrameSet& set) {
-  Measurement m;
+// Whether the candidate gives libpng's pixels on every frame of the set.
+bool identical(const bench::PngCandidate& candidate, const FrameSet& set) {
+  bool all = true;
   for (size_t k = 0; k < set.files.size(); ++k)
-    m.identical = same(candidate.decode(set.files[k]), set.reference[k]) && m.identical;
-  std::vector<double> passes;
-  for (int pass = 0; pass < 3; ++pass) {
-    Stopwatch watch;
-    for (const fs::path& file : set.files) candidate.decode(file);
-    passes.push_back(watch.lap() / double(set.files.size()));
-  }
-  std::sort(passes.begin(), passes.end());
-  m.ms_per_frame = passes[1];
-  return m;
+    all = same(candidate.decode(set.files[k]), set.reference[k]) && all;
+  return all;
+}
+
+double ms_per_frame(const bench::PngCandidate& candidate, const FrameSet& set) {
+  Stopwatch watch;
+  for (const fs::path& file : set.files) candidate.decode(file);
+  return watch.lap() / double(set.files.size());
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
 }  // namespace
@@ -95,24 +95,39 @@ int main() {
   for (FrameSet& set : sets)
     for (const fs::path& file : set.files) set.reference.push_back(candidates[0].decode(file));
 
+  // Which candidates decode everything, and as libpng does.
+  std::vector<std::string> verdicts;
+  std::vector<bool> decodes;
+  for (const bench::PngCandidate& candidate : candidates) {
+    try {
+      bool all = true;
+      for (const FrameSet& set : sets) all = identical(candidate, set) && all;
+      verdicts.push_back(all ? "yes, every frame" : "NO");
+      decodes.push_back(true);
+    } catch (const std::exception& e) {
+      verdicts.push_back(std::string("failed: ") + e.what());
+      decodes.push_back(false);
+    }
+  }
+  // Passes interleave the candidates, so that a machine's changing load hits all alike.
+  std::vector<std::vector<std::vector<double>>> times(
+      candidates.size(), std::vector<std::vector<double>>(sets.size()));
+  for (int pass = 0; pass < 3; ++pass)
+    for (size_t c = 0; c < candidates.size(); ++c)
+      if (decodes[c])
+        for (size_t s = 0; s < sets.size(); ++s)
+          times[c][s].push_back(ms_per_frame(candidates[c], sets[s]));
+
   std::printf("\nPNG decode, ms per frame on one core (median of 3 passes)\n\n| decoder |");
   for (const FrameSet& set : sets) std::printf(" %s (%zu) |", set.name.c_str(), set.files.size());
   std::printf(" same pixels as libpng |\n|---|");
   for (size_t k = 0; k <= sets.size(); ++k) std::printf("---|");
   std::printf("\n");
-  for (const bench::PngCandidate& candidate : candidates) {
-    std::printf("| %s |", candidate.name.c_str());
-    bool identical = true;
-    try {
-      for (const FrameSet& set : sets) {
-        const Measurement m = measure(candidate, set);
-        identical = identical && m.identical;
-        std::printf(" %.2f |", m.ms_per_frame);
-      }
-      std::printf(" %s |\n", identical ? "yes, every frame" : "NO");
-    } catch (const std::exception& e) {
-      std::printf(" failed: %s |\n", e.what());
-    }
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    std::printf("| %s |", candidates[c].name.c_str());
+    for (size_t s = 0; s < sets.size(); ++s)
+      times[c][s].empty() ? std::printf(" - |") : std::printf(" %.2f |", median(times[c][s]));
+    std::printf(" %s |\n", verdicts[c].c_str());
   }
   fs::remove_all(synthetic);
   return 0;
