@@ -116,8 +116,11 @@ void run_compare(const CompareArgs& args) {
     std::ifstream table(out / "comparison.md");
     std::cout << table.rdbuf();
   }
-  json figure = {{"figure", "compare"}, {"out", out.string()}, {"title", args.title},
-                 {"pdf", args.pdf}, {"runs", json::array()}};
+  json figure = {{"figure", "compare"},
+                 {"out", out.string()},
+                 {"title", args.title},
+                 {"pdf", args.pdf},
+                 {"runs", json::array()}};
   for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
   const eval::PlotOutcome plot = eval::draw_figures(json::array({figure}));
   if (plot.python_missing) {

@@ -177,27 +177,24 @@ namespace {
 // Adds the figures of `kind` (ate or rpe), drawn from the files just written, when plots are
 // due: asked for with --plot, or into --out unless --no-plot.
 void add_figures(const EvalArgs& a, const std::string& kind, const std::string& csv_path,
-                 json& figures, std::vector<std::string>& kinds) {
+                 json& figures) {
   const bool requested = !a.plot_dir.empty();
   if (!requested && (a.no_plot || a.out_dir.empty())) return;
   if (a.json_path.empty() || csv_path.empty()) return;
-  json figure = {{"figure", kind},
-                 {"metrics", a.json_path},
-                 {"csv", csv_path},
-                 {"out", requested ? a.plot_dir : a.out_dir},
-                 {"title", a.title},
-                 {"system_name", a.system_name},
+  json figure = {{"figure", kind},   {"metrics", a.json_path},
+                 {"csv", csv_path},  {"out", requested ? a.plot_dir : a.out_dir},
+                 {"title", a.title}, {"system_name", a.system_name},
                  {"pdf", a.pdf}};
   if (kind == "ate") figure["planes"] = split_planes(a.planes);
   figures.push_back(figure);
-  kinds.push_back(kind);
 }
 
 // Draws every figure in one process; returns false (after saying why) when plots asked for
 // with --plot were not drawn.
-bool draw_plots(const EvalArgs& a, const json& figures, const std::vector<std::string>& kinds) {
+bool draw_plots(const EvalArgs& a, const json& figures) {
   if (figures.empty()) return true;
-  const std::string what = kinds.size() == 2 ? kinds[0] + " and " + kinds[1] : kinds[0];
+  std::string what = figures[0]["figure"];  // "ate", "rpe" or "ate and rpe"
+  if (figures.size() == 2) what += " and " + figures[1]["figure"].get<std::string>();
   const std::string dir = figures[0]["out"];
   const eval::PlotOutcome outcome = eval::draw_figures(figures);
   if (outcome.drawn) {
@@ -232,7 +229,6 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
   const json common = common_json(a, in);
   eval::Alignment alignment;
   json figures = json::array();
-  std::vector<std::string> kinds;
   if (do_ate) {
     eval::AteResult ate = eval::compute_ate(gt, est, in.pairs, ate_options, a.gt, a.est);
     require_finite(ate.trans, "ATE", a.est);
@@ -247,7 +243,7 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
       write_tum_trajectory(a.aligned_path, eval::apply_alignment(est, ate.alignment),
                            "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
     if (!a.quiet) std::fputs(eval::ate_summary(ate, in.coverage).c_str(), stdout);
-    add_figures(a, "ate", a.ate_csv, figures, kinds);
+    add_figures(a, "ate", a.ate_csv, figures);
   } else if (scale_rpe) {
     alignment = eval::align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
   }
@@ -263,9 +259,9 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
     if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
     if (!a.rpe_csv.empty()) eval::write_rpe_csv(a.rpe_csv, rpe);
     if (!a.quiet) std::fputs(eval::rpe_summary(rpe, a.rpe).c_str(), stdout);
-    add_figures(a, "rpe", a.rpe_csv, figures, kinds);
+    add_figures(a, "rpe", a.rpe_csv, figures);
   }
-  if (!draw_plots(a, figures, kinds)) throw ExitCode{1};
+  if (!draw_plots(a, figures)) throw ExitCode{1};
 }
 
 }  // namespace slamkit::cli

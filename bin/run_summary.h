@@ -17,8 +17,7 @@ void print_tracking_summary(const TumSequence& sequence, const RunResult& result
 
 // ATE and RPE of RUN/trajectory.txt, written into the run folder, and their plots unless
 // `plot` is false; says so when the sequence has no groundtruth.
-void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out,
-                         bool plot);
+void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out, bool plot);
 
 // One progress bar per stage, drawn on stderr as the stages report.
 class StageProgress {

@@ -12,7 +12,7 @@ struct PlotOutcome {
   bool drawn = false;
   bool python_missing = false;  // no interpreter, or one without matplotlib
   std::string problem;          // why not drawn, for the user
-  double seconds = 0;   // wall time of the plotting process
+  double seconds = 0;           // wall time of the plotting process
 };
 
 // Runs plot.py with `figures`, a JSON list of {"figure": KIND, ...} (see plot.py), under

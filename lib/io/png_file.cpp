@@ -1,7 +1,7 @@
 #include "io/png_file.h"
 
-#include "io/png_libpng.h"
 #include "io/png_isal_inflate.h"
+#include "io/png_libpng.h"
 #include "io/png_lodepng.h"
 #include "io/png_source.h"
 

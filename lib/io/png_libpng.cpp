@@ -43,8 +43,8 @@ void read_from_memory(png_structp png, png_bytep out, png_size_t size) {
 
 cv::Mat decode_png_with_libpng(const PngSource& source) {
   std::string error;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error,
-                                           on_png_warning);
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) throw_input_error(source.name, "cannot decode image (out of memory)");
   MemoryReader reader{source.bytes};
@@ -96,8 +96,8 @@ void write_png(const std::filesystem::path& path, const cv::Mat& image, int comp
   File file(std::fopen(name.c_str(), "wb"));
   if (!file) throw_input_error(name, "cannot write file");
   std::string error;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error,
-                                            on_png_warning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) throw_input_error(name, "cannot encode image (out of memory)");
   std::vector<png_bytep> rows(size_t(image.rows));
@@ -114,7 +114,8 @@ void write_png(const std::filesystem::path& path, const cv::Mat& image, int comp
   png_write_info(png, info);
   if (image.channels() > 1) png_set_bgr(png);
   if (image.depth() == CV_16U) png_set_swap(png);
-  for (int r = 0; r < image.rows; ++r) rows[size_t(r)] = const_cast<png_bytep>(image.ptr<png_byte>(r));
+  for (int r = 0; r < image.rows; ++r)
+    rows[size_t(r)] = const_cast<png_bytep>(image.ptr<png_byte>(r));
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);

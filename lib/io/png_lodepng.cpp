@@ -28,8 +28,8 @@ void check_chunks(const PngSource& png) {
     const std::string type(reinterpret_cast<const char*>(chunk + 4), 4);
     const size_t length = lodepng_chunk_length(chunk);
     if (length > size_t(end - chunk) - 12)
-      throw_input_error(png.name, "cannot decode image: the file ends inside its " + type +
-                                      " chunk");
+      throw_input_error(png.name,
+                        "cannot decode image: the file ends inside its " + type + " chunk");
     if (crc32_z(0, chunk + 4, length + 4) != big_endian_32(chunk + 8 + length))
       throw_input_error(png.name, "cannot decode image: CRC error in the " + type + " chunk");
     if (type == "IEND") return;
@@ -40,8 +40,8 @@ void check_chunks(const PngSource& png) {
 // 16-bit samples are swapped in lodepng's buffer, which is ours.
 cv::Mat to_opencv_layout(unsigned char* pixels, const PngHeader& header) {
   const int depth = header.bit_depth == 16 ? CV_16U : CV_8U;
-  const cv::Mat stored(int(header.height), int(header.width),
-                       CV_MAKETYPE(depth, header.channels()), pixels);
+  const cv::Mat stored(int(header.height), int(header.width), CV_MAKETYPE(depth, header.channels()),
+                       pixels);
   if (depth == CV_16U) {
     auto* samples = reinterpret_cast<uint16_t*>(pixels);
     const size_t count = stored.total() * size_t(stored.channels());
@@ -78,8 +78,8 @@ cv::Mat decode_png_with_lodepng(const PngSource& png, ZlibInflate inflate) {
   LodePNGState state;
   lodepng_state_init(&state);
   const std::unique_ptr<LodePNGState, StateCleanup> cleanup(&state);
-  state.decoder.ignore_crc = 1;       // checked above
-  state.decoder.color_convert = 0;    // the samples as stored; to_opencv_layout reorders them
+  state.decoder.ignore_crc = 1;     // checked above
+  state.decoder.color_convert = 0;  // the samples as stored; to_opencv_layout reorders them
   state.decoder.read_text_chunks = 0;
   state.decoder.zlibsettings.custom_zlib = inflate;
   state.decoder.zlibsettings.custom_context = &context;
@@ -90,9 +90,9 @@ cv::Mat decode_png_with_lodepng(const PngSource& png, ZlibInflate inflate) {
       lodepng_decode(&decoded, &width, &height, &state, png.bytes.data(), png.bytes.size());
   const std::unique_ptr<unsigned char, PixelsFree> pixels(decoded);
   if (error)
-    throw_input_error(png.name, "cannot decode image: " + (context.error.empty()
-                                                               ? std::string(lodepng_error_text(error))
-                                                               : context.error));
+    throw_input_error(png.name, "cannot decode image: " +
+                                    (context.error.empty() ? std::string(lodepng_error_text(error))
+                                                           : context.error));
   return to_opencv_layout(pixels.get(), png.header);
 }
 

@@ -57,11 +57,13 @@ PngSource load_png_source(const std::filesystem::path& path) {
   LodePNGState state;
   lodepng_state_init(&state);
   unsigned width = 0, height = 0;
-  const unsigned error = lodepng_inspect(&width, &height, &state, png.bytes.data(), png.bytes.size());
+  const unsigned error =
+      lodepng_inspect(&width, &height, &state, png.bytes.data(), png.bytes.size());
   png.header = {width, height, int(state.info_png.color.bitdepth),
                 int(state.info_png.color.colortype), state.info_png.interlace_method != 0};
   lodepng_state_cleanup(&state);
-  if (error) throw_input_error(png.name, std::string("cannot decode image: ") + lodepng_error_text(error));
+  if (error)
+    throw_input_error(png.name, std::string("cannot decode image: ") + lodepng_error_text(error));
   if (png.header.raw_bytes() > kMaxDeflateRatio * double(png.bytes.size()))
     throw_input_error(png.name, "cannot decode image: the header declares " +
                                     std::to_string(width) + " x " + std::to_string(height) +

@@ -26,8 +26,8 @@ unsigned inflate_with_libdeflate(unsigned char** out, size_t* out_size, const un
       decompressor(libdeflate_alloc_decompressor(), libdeflate_free_decompressor);
   *out = static_cast<unsigned char*>(std::malloc(context.expected_bytes));
   if (!*out) return 1;
-  return libdeflate_zlib_decompress(decompressor.get(), in, in_size, *out,
-                                    context.expected_bytes, out_size) != LIBDEFLATE_SUCCESS;
+  return libdeflate_zlib_decompress(decompressor.get(), in, in_size, *out, context.expected_bytes,
+                                    out_size) != LIBDEFLATE_SUCCESS;
 }
 #endif
 
@@ -38,15 +38,16 @@ cv::Mat decode_with_spng(const std::filesystem::path& path) {
   std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx(spng_ctx_new(0), spng_ctx_free);
   spng_set_png_buffer(ctx.get(), png.bytes.data(), png.bytes.size());
   const PngHeader& h = png.header;
-  const cv::Mat row_buffer(1, int(h.width), CV_MAKETYPE(h.bit_depth == 16 ? CV_16U : CV_8U,
-                                                        h.channels()));
+  const cv::Mat row_buffer(1, int(h.width),
+                           CV_MAKETYPE(h.bit_depth == 16 ? CV_16U : CV_8U, h.channels()));
   cv::Mat image(int(h.height), int(h.width), row_buffer.type());
   if (int error = spng_decode_image(ctx.get(), nullptr, 0, SPNG_FMT_PNG, SPNG_DECODE_PROGRESSIVE))
     throw std::runtime_error(png.name + ": " + spng_strerror(error));
   const size_t row_bytes = image.cols * image.elemSize();
   for (int r = 0; r < image.rows; ++r) {
     const int error = spng_decode_row(ctx.get(), row_buffer.data, row_bytes);
-    if (error != 0 && error != SPNG_EOI) throw std::runtime_error(png.name + ": " + spng_strerror(error));
+    if (error != 0 && error != SPNG_EOI)
+      throw std::runtime_error(png.name + ": " + spng_strerror(error));
     if (h.channels() == 3)
       cv::cvtColor(row_buffer, image.row(r), cv::COLOR_RGB2BGR);
     else if (h.channels() == 4)
@@ -65,7 +66,9 @@ std::vector<PngCandidate> png_candidates() {
       {"libpng (read_png before)", read_png_with_libpng},
       {"lodepng + ISA-L (read_png)", read_png},
       {"lodepng, its own inflate",
-       [](const std::filesystem::path& p) { return decode_png_with_lodepng(load_png_source(p), nullptr); }},
+       [](const std::filesystem::path& p) {
+         return decode_png_with_lodepng(load_png_source(p), nullptr);
+       }},
       {"OpenCV imread (libpng)",
        [](const std::filesystem::path& p) { return cv::imread(p.string(), cv::IMREAD_UNCHANGED); }},
   };

@@ -4,6 +4,8 @@
 // median of 3 passes over the frames, files in the page cache) and whether the decoder gave
 // libpng's pixels on every frame.
 //   cmake --build build --target png_benchmark    (or: build/tests/benchmark/slamkit_png_benchmark)
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -83,7 +85,8 @@ int main() {
   } else {
     std::printf("SLAMKIT_DATA not set: synthetic frames only\n");
   }
-  const fs::path synthetic = fs::temp_directory_path() / "slamkit_png_benchmark_desk";
+  const fs::path synthetic =
+      fs::temp_directory_path() / ("slamkit_png_benchmark_desk_" + std::to_string(getpid()));
   synth::SequenceSpec spec;
   spec.preset = synth::Preset::kDesk;
   spec.frames = 50;

@@ -49,9 +49,10 @@ void report_front_end(const std::string& name, const TumSequence& sequence, int 
               timing.frames_per_second);
   const double floor_ms = decode_floor_ms(sequence, result.threads);
   const double end_to_end_ms = 1000 * result.seconds.total / double(result.frames.size());
-  std::printf("  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
-              "ms/frame: %.2fx the floor\n",
-              floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
+  std::printf(
+      "  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
+      "ms/frame: %.2fx the floor\n",
+      floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
 }
 
 void report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {

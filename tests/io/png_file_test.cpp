@@ -47,8 +47,8 @@ size_t find_chunk(const std::string& png, const std::string& type) {
 // Recomputes the CRC of the chunk at `at`, so that a test's edit reaches the decoder.
 void fix_crc(std::string& png, size_t at) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(png.data());
-  const uint32_t length = uint32_t(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 |
-                          bytes[at + 3];
+  const uint32_t length =
+      uint32_t(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 | bytes[at + 3];
   const uLong crc = crc32(0, bytes + at + 4, length + 4);
   for (int k = 0; k < 4; ++k) png[at + 8 + length + size_t(k)] = char(crc >> (24 - 8 * k));
 }
@@ -148,7 +148,8 @@ TEST(PngFile, HugeDeclaredSizeIsRefusedBeforeDecoding) {
   std::string png = file_bytes(dir / "small.png");
   const size_t ihdr = find_chunk(png, "IHDR");
   // 200000 x 200000 RGB: 120 GB, from a file of a few kilobytes.
-  for (size_t field : {ihdr + 8, ihdr + 12}) png.replace(field, 4, std::string("\0\x03\x0d\x40", 4));
+  for (size_t field : {ihdr + 8, ihdr + 12})
+    png.replace(field, 4, std::string("\0\x03\x0d\x40", 4));
   fix_crc(png, ihdr);
   write_bytes(dir / "huge.png", png);
   expect_input_error_naming(dir / "huge.png");
