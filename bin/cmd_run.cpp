@@ -117,8 +117,8 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
-  add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
+  add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { run(*args); });
