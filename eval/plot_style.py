@@ -6,10 +6,8 @@ since they cost start-up time and nothing here is shown on screen."""
 import os
 
 import matplotlib
-from matplotlib.backends import backend_svg  # noqa: F401  (imported once, before plot.py forks)
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from PIL import PngImagePlugin  # noqa: F401  (Agg's PNG writer; likewise)
 
 STYLE = {
     "font.size": 10,
