@@ -80,6 +80,14 @@ void add_ate_options(CLI::App* cmd, EvalArgs& a) {
       ->capture_default_str();
   cmd->add_option("--aligned", a.aligned_path, "Write the aligned estimate (TUM format)");
   cmd->add_option("--planes", a.planes, "Trajectory plot planes, e.g. xy,xz,yz")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            for (const std::string& plane : split_planes(text))
+              if (plane != "xy" && plane != "xz" && plane != "yz")
+                return "unknown plane '" + plane + "' (use xy, xz or yz)";
+            return std::string();
+          },
+          "PLANES"))
       ->capture_default_str();
 }
 
@@ -108,22 +116,20 @@ void run_compare(const CompareArgs& args) {
     std::ifstream table(out / "comparison.md");
     std::cout << table.rdbuf();
   }
-  const eval::PlotPython python = eval::find_plot_python();
-  if (!python.interpreter) {
-    std::cerr << "slamkit: note: no comparison plot drawn: " << python.problem
+  json figure = {{"figure", "compare"},
+                 {"out", out.string()},
+                 {"title", args.title},
+                 {"pdf", args.pdf},
+                 {"runs", json::array()}};
+  for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
+  const eval::PlotOutcome plot = eval::draw_figures(json::array({figure}));
+  if (plot.python_missing) {
+    std::cerr << "slamkit: note: no comparison plot drawn: " << plot.problem
               << "; the tables were written\n";
     return;
   }
-  std::vector<std::string> plot_args = {eval::plot_script("plot_compare.py").string(), "--out",
-                                        out.string()};
-  if (!args.title.empty()) plot_args.insert(plot_args.end(), {"--title", args.title});
-  if (args.pdf) plot_args.push_back("--pdf");
-  for (const auto& run : runs)
-    plot_args.insert(plot_args.end(), {"--run", run.name, run.dir.string()});
-  const int code = eval::run_program(*python.interpreter, plot_args);
-  if (code != 0) {
-    std::cerr << "slamkit: error: the comparison plotting script failed (exit code " << code
-              << ")\n";
+  if (!plot.drawn) {
+    std::cerr << "slamkit: error: no comparison plot drawn: " << plot.problem << "\n";
     throw ExitCode{1};
   }
   if (!args.quiet) std::printf("comparison written to %s\n", out.string().c_str());

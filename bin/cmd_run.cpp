@@ -25,6 +25,7 @@ struct RunArgs {
   int threads = -1;
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
+  bool plot = true;
   bool ascii = false;
   bool loops = true;
   std::string vocabulary_file;
@@ -111,7 +112,7 @@ void run(const RunArgs& args) {
     print_tracking_summary(seq, result);
     print_back_end_summary(seq, settings, result);
     if (settings.pipeline.evaluate) {
-      evaluate_run_folder(seq, args.out);
+      evaluate_run_folder(seq, args.out, args.plot);
       if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
     }
     std::printf("output      %s\n", args.out.c_str());
@@ -133,6 +134,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
+  cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
   add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   cmd->add_flag("!--no-loops", args->loops, "Skip the loop pass (place recognition, pose graph)");

@@ -21,6 +21,7 @@ struct TrackArgs {
   int threads = -1;
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
+  bool plot = true;
   SequenceOptions sequence;
 };
 
@@ -44,7 +45,7 @@ void track(const TrackArgs& args) {
     write_timing_json(args.out, name, result);
     print_tracking_summary(seq, result);
     std::printf("output      %s\n", args.out.c_str());
-    if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out);
+    if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out, args.plot);
     return result.seconds;
   });
 }
@@ -61,6 +62,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--threads", args->threads, "Threads for the parallel stage (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
+  cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
   add_lost_frames_option(cmd, args->lost_frames);
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { track(*args); });

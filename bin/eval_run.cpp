@@ -7,6 +7,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <vector>
 
 #include "bin/command.h"
 #include "core/error.h"
@@ -164,40 +166,48 @@ json common_json(const EvalArgs& a, const Inputs& in) {
           {"coverage", eval::coverage_json(in.coverage)}};
 }
 
-// Runs plot_trajectory_errors.py KIND; returns false (after saying why) when no plot was
-// drawn although one was due.
-bool draw_plots(const EvalArgs& a, const std::string& kind, const std::string& csv_path) {
+}  // namespace
+
+std::vector<std::string> split_planes(const std::string& text) {
+  std::vector<std::string> planes;
+  std::stringstream list(text);
+  for (std::string plane; std::getline(list, plane, ',');) planes.push_back(plane);
+  return planes;
+}
+
+namespace {
+
+// Adds the figures of `kind` (ate or rpe), drawn from the files just written, when plots are
+// due: asked for with --plot, or into --out unless --no-plot.
+void add_figures(const EvalArgs& a, const std::string& kind, const std::string& csv_path,
+                 json& figures) {
   const bool requested = !a.plot_dir.empty();
-  if (!requested && (a.no_plot || a.out_dir.empty())) return true;
-  if (a.json_path.empty() || csv_path.empty()) return true;
-  const std::string dir = requested ? a.plot_dir : a.out_dir;
-  const eval::PlotPython python = eval::find_plot_python();
-  std::string problem = python.problem;
-  if (python.interpreter) {
-    std::vector<std::string> args = {eval::plot_script("plot_trajectory_errors.py").string(),
-                                     kind,
-                                     "--metrics",
-                                     a.json_path,
-                                     "--csv",
-                                     csv_path,
-                                     "--out",
-                                     dir,
-                                     "--title",
-                                     a.title,
-                                     "--system-name",
-                                     a.system_name,
-                                     "--planes",
-                                     a.planes};
-    if (a.pdf) args.push_back("--pdf");
-    const int code = eval::run_program(*python.interpreter, args);
-    if (code == 0) {
-      if (!a.quiet) std::printf("%s plots written to %s\n", kind.c_str(), dir.c_str());
-      return true;
-    }
-    problem = "the plotting script failed (exit code " + std::to_string(code) + ")";
+  if (!requested && (a.no_plot || a.out_dir.empty())) return;
+  if (a.json_path.empty() || csv_path.empty()) return;
+  json figure = {{"figure", kind},   {"metrics", a.json_path},
+                 {"csv", csv_path},  {"out", requested ? a.plot_dir : a.out_dir},
+                 {"title", a.title}, {"system_name", a.system_name},
+                 {"pdf", a.pdf}};
+  if (kind == "ate") figure["planes"] = split_planes(a.planes);
+  figures.push_back(figure);
+}
+
+// Draws every figure in one process; returns false (after saying why) when plots asked for
+// with --plot were not drawn.
+bool draw_plots(const EvalArgs& a, const json& figures) {
+  if (figures.empty()) return true;
+  std::string what = figures[0]["figure"];  // "ate", "rpe" or "ate and rpe"
+  if (figures.size() == 2) what += " and " + figures[1]["figure"].get<std::string>();
+  const std::string dir = figures[0]["out"];
+  const eval::PlotOutcome outcome = eval::draw_figures(figures);
+  if (outcome.drawn) {
+    if (!a.quiet)
+      std::printf("%s plots written to %s in %.2f s\n", what.c_str(), dir.c_str(), outcome.seconds);
+    return true;
   }
-  std::cerr << "slamkit: " << (requested ? "error" : "note") << ": no " << kind
-            << " plots drawn: " << problem << "; metrics.json and the CSV were written\n";
+  const bool requested = !a.plot_dir.empty();
+  std::cerr << "slamkit: " << (requested ? "error" : "note") << ": no " << what
+            << " plots drawn: " << outcome.problem << "; metrics.json and the CSVs were written\n";
   return !requested;
 }
 
@@ -221,7 +231,7 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
   // metric's per-pose data at a time.
   const json common = common_json(a, in);
   eval::Alignment alignment;
-  bool plotted = true;
+  json figures = json::array();
   if (do_ate) {
     eval::AteResult ate = eval::compute_ate(gt, est, in.pairs, ate_options, a.gt, a.est);
     require_finite(ate.trans, "ATE", a.est);
@@ -236,7 +246,7 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
       write_tum_trajectory(a.aligned_path, eval::apply_alignment(est, ate.alignment),
                            "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
     if (!a.quiet) std::fputs(eval::ate_summary(ate, in.coverage).c_str(), stdout);
-    plotted = draw_plots(a, "ate", a.ate_csv) && plotted;
+    add_figures(a, "ate", a.ate_csv, figures);
   } else if (scale_rpe) {
     alignment = eval::align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
   }
@@ -252,9 +262,9 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
     if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
     if (!a.rpe_csv.empty()) eval::write_rpe_csv(a.rpe_csv, rpe);
     if (!a.quiet) std::fputs(eval::rpe_summary(rpe, a.rpe).c_str(), stdout);
-    plotted = draw_plots(a, "rpe", a.rpe_csv) && plotted;
+    add_figures(a, "rpe", a.rpe_csv, figures);
   }
-  if (!plotted) throw ExitCode{1};
+  if (!draw_plots(a, figures)) throw ExitCode{1};
 }
 
 }  // namespace slamkit::cli

@@ -3,6 +3,7 @@
 // sequence has groundtruth: read both files, associate, compute, write, summarise, plot.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "eval/rpe.h"
 
@@ -36,6 +37,9 @@ struct EvalArgs {
   std::string unit = "s";
   std::string rpe_convention;  // tum or evo; "" = the convention's
 };
+
+// "xy,xz" -> {"xy", "xz"}: the trajectory plot planes of --planes.
+std::vector<std::string> split_planes(const std::string& text);
 
 // Throws InputError for unreadable input and ExitCode{1} when requested plots fail.
 void run_eval(EvalArgs& args, bool do_ate, bool do_rpe);

@@ -25,7 +25,7 @@ void print_tracking_summary(const TumSequence& seq, const RunResult& result) {
               timing.frames_per_second, result.threads, timing.tracking_median_ms);
 }
 
-void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& out) {
+void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& out, bool plot) {
   if (!seq.groundtruth()) {
     std::printf("evaluation  skipped: the sequence has no groundtruth.txt\n");
     return;
@@ -36,6 +36,7 @@ void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& ou
   eval_args.out_dir = out.string();
   eval_args.system_name = "slamkit";
   eval_args.title = seq.folder().filename().string();
+  eval_args.no_plot = !plot;
   if (seq.duration() < 2.0) {  // too short for the benchmark's 1 s drift: consecutive frames
     eval_args.unit = "f";
     eval_args.rpe.delta = 1;

@@ -15,9 +15,9 @@ namespace slamkit::cli {
 // Frames, keyframes, lost frames and why, solvers, speed.
 void print_tracking_summary(const TumSequence& sequence, const RunResult& result);
 
-// ATE and RPE of RUN/trajectory.txt, written into the run folder; says so when the sequence
-// has no groundtruth.
-void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out);
+// ATE and RPE of RUN/trajectory.txt, written into the run folder, and their plots unless
+// `plot` is false; says so when the sequence has no groundtruth.
+void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out, bool plot);
 
 // One progress bar per stage, drawn on stderr as the stages report.
 class StageProgress {

@@ -1,6 +1,6 @@
 #pragma once
 // Comparing several evaluated runs (folders holding metrics.json and errors.csv): a table in
-// Markdown and CSV; the box plot is drawn by plot_compare.py.
+// Markdown and CSV; the box plot is drawn by plot_compare.py (through plot.py).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,28 +1,18 @@
-#!/usr/bin/python3
 """Comparison of several evaluated runs: box plot of the per-pose ATE of each run, with a
 table of the main statistics under it (ate_comparison.png / .svg / .pdf)."""
-import argparse
 import json
 import os
 
 import numpy as np
 
-from plot_style import STYLE, plt, save
+from plot_style import new_figure, save
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--run", nargs=2, action="append", required=True,
-                        metavar=("NAME", "DIR"), help="a run: name and folder")
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--title", default="")
-    parser.add_argument("--pdf", action="store_true")
-    args = parser.parse_args()
-    plt.rcParams.update(STYLE)
-
+def plot_compare(request):
+    """Request: runs (list of [name, folder]), out, title (optional), pdf."""
     names, errors, rows = [], [], []
     sequences = set()
-    for name, folder in args.run:
+    for name, folder in request["runs"]:
         with open(os.path.join(folder, "metrics.json")) as f:
             metrics = json.load(f)
         data = np.atleast_1d(np.genfromtxt(os.path.join(folder, "errors.csv"), delimiter=",",
@@ -36,8 +26,8 @@ def main():
                     (["%.4f" % rpe["trans"]["rmse"], "%.3f" % rpe["rot_deg"]["rmse"]]
                      if rpe else ["–", "–"]))
 
-    title = args.title or ", ".join(sorted(s for s in sequences if s))
-    fig, ax = plt.subplots(figsize=(max(5.5, 1.6 * len(names) + 2.5), 4.8))
+    title = request.get("title") or ", ".join(sorted(s for s in sequences if s))
+    fig, ax = new_figure((max(5.5, 1.6 * len(names) + 2.5), 4.8))
     ax.boxplot(errors, labels=names, showmeans=True, whis=(5, 95), flierprops={"markersize": 2},
                meanprops={"marker": "^", "markerfacecolor": "tab:red",
                           "markeredgecolor": "tab:red", "markersize": 5})
@@ -53,8 +43,4 @@ def main():
     table.set_fontsize(8)
     ax.text(0.0, -0.24 - height, "ATE statistics and RPE t (translational RMSE) in m, RPE rot "
             "(rotational RMSE) in deg", transform=ax.transAxes, fontsize=8, va="top")
-    save(fig, args.out, "ate_comparison", args.pdf)
-
-
-if __name__ == "__main__":
-    main()
+    return save(fig, request["out"], "ate_comparison", request.get("pdf", False))

@@ -1,10 +1,13 @@
-"""Shared figure style and output for slamkit's evaluation plots (matplotlib, Agg)."""
+"""Shared figure style and output for slamkit's evaluation plots.
+
+Figures are made with matplotlib's Figure class and written by its Agg (PNG), SVG and PDF
+backends directly: pyplot, its backend selection and its figure manager are never imported,
+since they cost start-up time and nothing here is shown on screen."""
 import os
 
 import matplotlib
-
-matplotlib.use("Agg")  # files only, no display needed
-import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
 STYLE = {
     "font.size": 10,
@@ -17,14 +20,28 @@ STYLE = {
     "grid.alpha": 0.3,
     "savefig.dpi": 200,
     "svg.fonttype": "none",  # keep text as text in SVG
+    "svg.hashsalt": "slamkit",  # the same SVG element ids at every run
 }
+matplotlib.rcParams.update(STYLE)
+# The same input gives the same files: no creation date in SVG or PDF.
+NO_DATE = {"png": None, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
+
+
+def new_figure(figsize, rows=1, sharex=False):
+    """A figure and its axes (one, or a column of `rows`)."""
+    fig = Figure(figsize=figsize)
+    return fig, fig.subplots(rows, 1, sharex=sharex)
 
 
 def save(fig, out_dir, name, pdf):
-    """Writes NAME.png and NAME.svg (and NAME.pdf) into out_dir; returns the PNG path."""
+    """Writes NAME.png and NAME.svg (and NAME.pdf) into out_dir; returns the PNG path.
+
+    The tight bounding box is computed once for all formats: savefig's bbox_inches="tight"
+    lays the figure out again for each file, a third of the drawing time."""
     os.makedirs(out_dir, exist_ok=True)
-    formats = ["png", "svg"] + (["pdf"] if pdf else [])
-    for ext in formats:
-        fig.savefig(os.path.join(out_dir, "%s.%s" % (name, ext)), bbox_inches="tight")
-    plt.close(fig)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    bbox = fig.get_tightbbox(renderer).padded(matplotlib.rcParams["savefig.pad_inches"])
+    for ext in ["png", "svg"] + (["pdf"] if pdf else []):
+        fig.savefig(os.path.join(out_dir, "%s.%s" % (name, ext)), bbox_inches=bbox,
+                    metadata=NO_DATE[ext])
     return os.path.join(out_dir, name + ".png")

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Plots of one evaluated run, drawn from the files `slamkit eval ate|rpe` wrote.
 
   ate: ate_over_time  - absolute translational error over time with RMSE / mean / median
@@ -7,15 +6,14 @@
                         estimate coloured by its error, and the difference segments between
                         matched poses (as evaluate_ate.py --plot draws them).
   rpe: rpe_over_time  - translational and rotational relative error over time.
-Each is written as PNG and SVG (and PDF with --pdf).
+Each is written as PNG and SVG (and PDF with "pdf": true).
 """
-import argparse
 import json
-import sys
 
 import numpy as np
+from matplotlib.collections import LineCollection
 
-from plot_style import STYLE, plt, save
+from plot_style import new_figure, save
 
 PLANE_AXES = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 
@@ -54,52 +52,52 @@ def stat_lines(ax, stats, unit):
                label="median %.4f %s" % (stats["median"], unit))
 
 
-def plot_ate_over_time(errors, metrics, args):
+def plot_ate_over_time(errors, metrics, request):
     ate = metrics["ate"]
     t, err = break_gaps(errors["time"] - errors["time"][0], errors["ate_m"])
-    fig, ax = plt.subplots(figsize=(7.0, 3.8))
+    fig, ax = new_figure((7.0, 3.8))
     ax.plot(t, err, color="0.25", lw=0.8, label="error per pose")
     stat_lines(ax, ate, "m")
     ax.set_xlabel("time since first matched pose [s]")
     ax.set_ylabel("absolute translational error [m]")
     finish_axes(ax, t, err)
     ax.set_title("Absolute trajectory error: %s on %s\n(%d pose pairs, %s alignment)"
-                 % (args.system_name, args.title, ate["pairs"], ate["alignment"]["method"]))
-    return save(fig, args.out, "ate_over_time", args.pdf)
+                 % (request["system_name"], request["title"], ate["pairs"],
+                    ate["alignment"]["method"]))
+    return save(fig, request["out"], "ate_over_time", request.get("pdf", False))
 
 
-def plot_trajectory(errors, metrics, plane, args):
+def plot_trajectory(errors, metrics, plane, request):
     a, b = PLANE_AXES[plane]
     names = ("x", "y", "z")
     est = np.stack([errors["est_tx"], errors["est_ty"], errors["est_tz"]], axis=1)
     gt = np.stack([errors["gt_tx"], errors["gt_ty"], errors["gt_tz"]], axis=1)
-    fig, ax = plt.subplots(figsize=(6.4, 5.6))
+    fig, ax = new_figure((6.4, 5.6))
     # Difference segments between matched poses, below everything else.
     segments = np.stack([est[:, [a, b]], gt[:, [a, b]]], axis=1)
-    from matplotlib.collections import LineCollection
     ax.add_collection(LineCollection(segments, colors="tab:red", linewidths=0.6, alpha=0.6,
                                      label="difference", zorder=1))
     _, gt_a, gt_b = break_gaps(errors["time"], gt[:, a], gt[:, b])
     ax.plot(gt_a, gt_b, color="black", lw=1.0, label="groundtruth", zorder=2)
     sc = ax.scatter(est[:, a], est[:, b], c=errors["ate_m"], cmap="viridis", s=4, zorder=3,
-                    label="%s (aligned)" % args.system_name)
+                    label="%s (aligned)" % request["system_name"])
     cbar = fig.colorbar(sc, ax=ax, shrink=0.85, pad=0.02)
     cbar.set_label("absolute translational error [m]")
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("%s [m]" % names[a])
     ax.set_ylabel("%s [m]" % names[b])
     ax.set_title("Trajectory (%s plane): %s on %s\nATE RMSE %.4f m over %d pairs"
-                 % (plane, args.system_name, args.title, metrics["ate"]["rmse"],
+                 % (plane, request["system_name"], request["title"], metrics["ate"]["rmse"],
                     metrics["ate"]["pairs"]))
     ax.legend(loc="best", markerscale=3, framealpha=0.9)
-    return save(fig, args.out, "trajectory_" + plane, args.pdf)
+    return save(fig, request["out"], "trajectory_" + plane, request.get("pdf", False))
 
 
-def plot_rpe_over_time(pairs, metrics, args):
+def plot_rpe_over_time(pairs, metrics, request):
     rpe = metrics["rpe"]
     t, trans, rot = break_gaps(pairs["time_i"] - pairs["time_i"][0], pairs["trans_m"],
                                pairs["rot_deg"])
-    fig, (ax_t, ax_r) = plt.subplots(2, 1, figsize=(7.0, 6.0), sharex=True)
+    fig, (ax_t, ax_r) = new_figure((7.0, 6.0), rows=2, sharex=True)
     ax_t.plot(t, trans, color="0.25", lw=0.8, label="error per pair")
     stat_lines(ax_t, rpe["trans"], "m")
     ax_t.set_ylabel("translational error [m]")
@@ -111,37 +109,28 @@ def plot_rpe_over_time(pairs, metrics, args):
     finish_axes(ax_r, t, rot)
     unit = {"s": "s", "f": "frames", "m": "m", "deg": "deg"}[rpe["unit"]]
     ax_t.set_title("Relative pose error over %g %s: %s on %s\n(%d pose pairs, %s convention)"
-                   % (rpe["delta"], unit, args.system_name, args.title, rpe["pairs"],
-                      rpe["convention"]))
-    return save(fig, args.out, "rpe_over_time", args.pdf)
+                   % (rpe["delta"], unit, request["system_name"], request["title"],
+                      rpe["pairs"], rpe["convention"]))
+    return save(fig, request["out"], "rpe_over_time", request.get("pdf", False))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("kind", choices=["ate", "rpe"])
-    parser.add_argument("--metrics", required=True, help="metrics.json")
-    parser.add_argument("--csv", required=True, help="errors.csv (ate) or rpe.csv (rpe)")
-    parser.add_argument("--out", required=True, help="output folder")
-    parser.add_argument("--title", default="sequence")
-    parser.add_argument("--system-name", default="estimate")
-    parser.add_argument("--planes", default="xy", help="comma-separated: xy,xz,yz")
-    parser.add_argument("--pdf", action="store_true")
-    args = parser.parse_args()
-
-    plt.rcParams.update(STYLE)
-    with open(args.metrics) as f:
+def read_inputs(request):
+    with open(request["metrics"]) as f:
         metrics = json.load(f)
-    data = read_csv(args.csv)
-    if args.kind == "ate":
-        plot_ate_over_time(data, metrics, args)
-        for plane in args.planes.split(","):
-            if plane not in PLANE_AXES:
-                sys.exit("unknown plane '%s' (use xy, xz or yz)" % plane)
-            plot_trajectory(data, metrics, plane, args)
-    else:
-        plot_rpe_over_time(data, metrics, args)
+    return read_csv(request["csv"]), metrics
 
 
-if __name__ == "__main__":
-    main()
+def plot_ate(request):
+    """Request: metrics, csv (errors.csv), out, title, system_name, planes (list), pdf."""
+    errors, metrics = read_inputs(request)
+    plot_ate_over_time(errors, metrics, request)
+    for plane in request.get("planes", ["xy"]):
+        if plane not in PLANE_AXES:
+            raise ValueError("unknown plane '%s' (use xy, xz or yz)" % plane)
+        plot_trajectory(errors, metrics, plane, request)
+
+
+def plot_rpe(request):
+    """Request: metrics, csv (rpe.csv), out, title, system_name, pdf."""
+    pairs, metrics = read_inputs(request)
+    plot_rpe_over_time(pairs, metrics, request)

@@ -1,34 +1,32 @@
 #pragma once
-// Plots are drawn by matplotlib scripts next to this file (plot_trajectory_errors.py,
-// plot_compare.py) from the data files the C++ side wrote; this finds a Python that has
-// matplotlib and runs them.
+// Plots are drawn by eval/plot.py from the data files the C++ side wrote (metrics.json, the
+// CSVs), so metrics cost nothing when plots are off. One Python process draws every figure a
+// command asks for: starting Python and importing matplotlib costs about 0.4 s before any
+// figure is drawn, which one process per figure paid again and again.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace slamkit::eval {
 
-struct PlotPython {
-  std::optional<std::string> interpreter;  // set when it can import matplotlib
-  std::string problem;                     // why not, for the user
+struct PlotOutcome {
+  bool drawn = false;
+  bool python_missing = false;  // no interpreter, or one without matplotlib
+  std::string problem;          // why not drawn, for the user
+  double seconds = 0;           // wall time of the plotting process
 };
 
+// Runs plot.py with `figures`, a JSON list of {"figure": KIND, ...} (see plot.py), under
 // $SLAMKIT_PYTHON, else /usr/bin/python3 (Debian's, which has matplotlib; the python3 on
-// PATH may be another build without it).
-PlotPython find_plot_python();
+// PATH may be another build without it). plot.py is found in $SLAMKIT_EVAL_SCRIPTS, else in
+// the source folder of eval/.
+PlotOutcome draw_figures(const nlohmann::json& figures);
 
-// $SLAMKIT_EVAL_SCRIPTS/<name>, else the source folder of eval/.
-std::filesystem::path plot_script(const std::string& name);
-
-// Runs `interpreter script args...` without a shell; returns its exit code (-1 if it could
-// not start).
-int run_program(const std::string& interpreter, const std::vector<std::string>& args,
-                bool silence_output = false);
-
-// Runs the plot script `script` (plot_script) with `args` under find_plot_python(). Returns
-// `png` once it exists, else nothing, with a note on stderr saying why no `what` was drawn
-// (no interpreter with matplotlib, or the script failed).
+// Runs the plot script `script` (found as plot.py is) with `args` under the same interpreter.
+// Returns `png` once it exists, else nothing, with a note on stderr saying why no `what` was
+// drawn (the script failed, or could not import matplotlib: its exit code).
 std::optional<std::filesystem::path> draw_plot(const std::string& script,
                                                const std::vector<std::string>& args,
                                                const std::filesystem::path& png,

@@ -33,6 +33,7 @@ build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 packages=(
   g++ cmake make pkg-config
   libeigen3-dev libopencv-dev libceres-dev libpcl-dev libyaml-cpp-dev libpng-dev zlib1g-dev
+  liblodepng-dev libisal-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
   python3-matplotlib
 )

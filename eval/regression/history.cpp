@@ -1,5 +1,6 @@
-// history.csv and the plots drawn with eval's scripts.
+// history.csv and the suite's plots, drawn by eval's plot.py.
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -67,25 +68,29 @@ void append_history(const fs::path& file, const SuiteReport& report) {
   }
 }
 
-std::optional<fs::path> draw_comparison(const SuiteReport& report) {
-  std::vector<std::string> args = {"--out", report.out.string(), "--title", report.suite->name};
-  int runs = 0;
+void draw_suite_plots(const fs::path& history, SuiteReport& report) {
+  nlohmann::json compare = {{"figure", "compare"},
+                            {"out", report.out.string()},
+                            {"title", report.suite->name},
+                            {"runs", nlohmann::json::array()}};
   for (const EntryResult& e : report.entries)
-    if (e.run.ok && fs::exists(e.run.dir / "errors.csv")) {
-      args.insert(args.end(), {"--run", e.entry->name, e.run.dir.string()});
-      ++runs;
-    }
-  if (runs == 0) return std::nullopt;
-  return eval::draw_plot("plot_compare.py", args, report.out / "ate_comparison.png",
-                         "comparison plot");
-}
-
-std::optional<fs::path> draw_history(const fs::path& history, const SuiteReport& report) {
-  if (!fs::exists(history)) return std::nullopt;
-  return eval::draw_plot(
-      "plot_history.py",
-      {"--history", history.string(), "--suite", report.suite->name, "--out", report.out.string()},
-      report.out / "ate_history.png", "history plot");
+    if (e.run.ok && fs::exists(e.run.dir / "errors.csv"))
+      compare["runs"].push_back({e.entry->name, e.run.dir.string()});
+  nlohmann::json figures = nlohmann::json::array();
+  if (!compare["runs"].empty()) figures.push_back(compare);
+  if (fs::exists(history))
+    figures.push_back({{"figure", "history"},
+                       {"history", history.string()},
+                       {"suite", report.suite->name},
+                       {"out", report.out.string()}});
+  if (figures.empty()) return;
+  const eval::PlotOutcome outcome = eval::draw_figures(figures);
+  if (!outcome.drawn) {
+    std::cerr << "slamkit: note: no suite plots drawn: " << outcome.problem << "\n";
+    return;
+  }
+  if (!compare["runs"].empty()) report.comparison_plot = report.out / "ate_comparison.png";
+  if (fs::exists(history)) report.history_plot = report.out / "ate_history.png";
 }
 
 }  // namespace slamkit::regress

@@ -141,8 +141,7 @@ int run_regression(const RegressOptions& options) {
     report.baselines_updated = true;
   }
   append_history(history, report);
-  if (auto plot = draw_comparison(report)) report.comparison_plot = *plot;
-  if (auto plot = draw_history(history, report)) report.history_plot = *plot;
+  draw_suite_plots(history, report);
   write_report_markdown(options.out / "report.md", report);
   write_report_html(options.out / "report.html", report);
   write_junit(options.out / "junit.xml", report);

@@ -48,11 +48,9 @@ void write_junit(const std::filesystem::path& file, const SuiteReport& report);
 // count its reused runs twice.
 void append_history(const std::filesystem::path& file, const SuiteReport& report);
 
-// Plots drawn with eval's scripts: the box plot across entries (plot_compare.py) and ATE over
-// versions (plot_history.py). Each returns the PNG, or nothing (with a note on stderr) when
-// no plotting Python is found or the script failed.
-std::optional<std::filesystem::path> draw_comparison(const SuiteReport& report);
-std::optional<std::filesystem::path> draw_history(const std::filesystem::path& history,
-                                                  const SuiteReport& report);
+// The suite's plots, drawn by eval's plot.py in one process: the box plot across entries
+// (ate_comparison.png) and ATE over versions (ate_history.png). Sets report.comparison_plot
+// and report.history_plot to the PNGs drawn; a note on stderr says why when none were.
+void draw_suite_plots(const std::filesystem::path& history, SuiteReport& report);
 
 }  // namespace slamkit::regress

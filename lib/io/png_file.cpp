@@ -1,146 +1,20 @@
 #include "io/png_file.h"
 
-#include <png.h>
-#include <zlib.h>
-
-#include <csetjmp>
-#include <cstdio>
-#include <memory>
-#include <vector>
-
-#include "core/error.h"
+#include "io/png_isal_inflate.h"
+#include "io/png_libpng.h"
+#include "io/png_lodepng.h"
+#include "io/png_source.h"
 
 namespace slamkit {
-namespace {
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-// libpng reports errors by longjmp; this keeps its message for the exception thrown after.
-void on_png_error(png_structp png, png_const_charp message) {
-  *static_cast<std::string*>(png_get_error_ptr(png)) = message;
-  png_longjmp(png, 1);
-}
-void on_png_warning(png_structp, png_const_charp) {}
-
-// Owns libpng's read structures, also when an exception leaves read_png.
-struct ReadStructs {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  ~ReadStructs() { png_destroy_read_struct(&png, &info, nullptr); }
-};
-
-// The two steps that call into libpng, each with its own setjmp and no C++ object in its frame,
-// so that libpng's longjmp skips no destructor and leaves no variable indeterminate.
-bool read_header(png_structp png, png_infop info, std::FILE* file) {
-  if (setjmp(png_jmpbuf(png))) return false;
-  png_init_io(png, file);
-  png_set_sig_bytes(png, 8);
-  png_read_info(png, info);
-  const int colour = png_get_color_type(png, info);
-  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (png_get_bit_depth(png, info) < 8) png_set_packing(png), png_set_expand(png);
-  if (colour == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_strip_alpha(png);
-  if (colour & PNG_COLOR_MASK_COLOR || colour == PNG_COLOR_TYPE_PALETTE) png_set_bgr(png);
-  png_set_swap(png);  // 16-bit samples are big-endian in the file
-  png_read_update_info(png, info);
-  return true;
-}
-
-bool read_pixels(png_structp png, png_bytepp rows) {
-  if (setjmp(png_jmpbuf(png))) return false;
-  png_read_image(png, rows);
-  png_read_end(png, nullptr);
-  return true;
-}
-
-}  // namespace
 
 cv::Mat read_png(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  File file(std::fopen(name.c_str(), "rb"));
-  if (!file) throw_input_error(name, "cannot open image");
-  png_byte signature[8];
-  if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
-    throw_input_error(name, "not a PNG file");
-
-  std::string error;
-  ReadStructs s;
-  s.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
-  s.info = s.png ? png_create_info_struct(s.png) : nullptr;
-  if (!s.info) throw_input_error(name, "cannot decode image (out of memory)");
-  // Ancillary chunks are skipped unread: libpng takes (and clears) the memory a text chunk's
-  // length field claims before reading it, 1.7 GB for a 74-byte file. Nothing of them is used;
-  // tRNS (transparency) would turn a grey image into grey+alpha.
-  png_set_keep_unknown_chunks(s.png, PNG_HANDLE_CHUNK_NEVER, nullptr, -1);
-  static const png_byte kTransparency[] = "tRNS";
-  png_set_keep_unknown_chunks(s.png, PNG_HANDLE_CHUNK_NEVER, kTransparency, 1);
-  if (!read_header(s.png, s.info, file.get()))
-    throw_input_error(name, "cannot decode image: " + error);
-
-  const png_uint_32 width = png_get_image_width(s.png, s.info);
-  const png_uint_32 height = png_get_image_height(s.png, s.info);
-  const size_t row_bytes = png_get_rowbytes(s.png, s.info);
-  if (width > png_uint_32(kMaxImageSide) || height > png_uint_32(kMaxImageSide) ||
-      double(row_bytes) * height > double(kMaxImageBytes))
-    throw_input_error(
-        name, "the header claims a " + std::to_string(width) + "x" + std::to_string(height) +
-                  " image (" + std::to_string(uint64_t(row_bytes) * height >> 20) +
-                  " MiB decoded); images are limited to " + std::to_string(kMaxImageSide) +
-                  " pixels a side and " + std::to_string(kMaxImageBytes >> 20) + " MiB");
-  const int depth = png_get_bit_depth(s.png, s.info) == 16 ? CV_16U : CV_8U;
-  cv::Mat image(int(height), int(width), CV_MAKETYPE(depth, png_get_channels(s.png, s.info)));
-  std::vector<png_bytep> rows(height);
-  for (int r = 0; r < image.rows; ++r) rows[size_t(r)] = image.ptr<png_byte>(r);
-  if (!read_pixels(s.png, rows.data())) throw_input_error(name, "cannot decode image: " + error);
-  return image;
+  const PngSource png = load_png_source(path);
+  return lodepng_decodes(png.header) ? decode_png_with_lodepng(png, inflate_with_isal)
+                                     : decode_png_with_libpng(png);
 }
 
-void write_png(const std::filesystem::path& path, const cv::Mat& image, int compression) {
-  const std::string name = path.string();
-  int colour = 0;
-  switch (image.type()) {
-    case CV_8UC1:
-    case CV_16UC1:
-      colour = PNG_COLOR_TYPE_GRAY;
-      break;
-    case CV_8UC3:
-      colour = PNG_COLOR_TYPE_RGB;
-      break;
-    case CV_8UC4:
-      colour = PNG_COLOR_TYPE_RGB_ALPHA;
-      break;
-    default:
-      throw_input_error(name, "cannot write this image type as PNG");
-  }
-  File file(std::fopen(name.c_str(), "wb"));
-  if (!file) throw_input_error(name, "cannot write file");
-  std::string error;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error,
-                                            on_png_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) throw_input_error(name, "cannot encode image (out of memory)");
-  std::vector<png_bytep> rows(size_t(image.rows));
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw_input_error(name, "cannot write PNG: " + error);
-  }
-  png_init_io(png, file.get());
-  png_set_compression_level(png, compression);
-  png_set_compression_strategy(png, Z_RLE);
-  png_set_IHDR(png, info, png_uint_32(image.cols), png_uint_32(image.rows),
-               image.depth() == CV_16U ? 16 : 8, colour, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  if (image.channels() > 1) png_set_bgr(png);
-  if (image.depth() == CV_16U) png_set_swap(png);
-  for (int r = 0; r < image.rows; ++r) rows[size_t(r)] = const_cast<png_bytep>(image.ptr<png_byte>(r));
-  png_write_image(png, rows.data());
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  if (std::fflush(file.get()) != 0) throw_input_error(name, "write failed");
+cv::Mat read_png_with_libpng(const std::filesystem::path& path) {
+  return decode_png_with_libpng(load_png_source(path));
 }
 
 }  // namespace slamkit

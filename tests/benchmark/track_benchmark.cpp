@@ -3,6 +3,8 @@
 // track`: per-stage median milliseconds per frame, frames per second) and the whole pipeline
 // (`slamkit run`: the wall time of each stage, decode to map.ply, and frames per second).
 //   cmake --build build --target benchmark        (or: build/tests/benchmark/slamkit_benchmark)
+#include <omp.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +20,16 @@ namespace fs = std::filesystem;
 using namespace slamkit;
 
 namespace {
+
+// The decode floor: every frame pair decoded on `threads` threads with nothing else running,
+// wall milliseconds per frame. No pipeline can prepare frames faster.
+double decode_floor_ms(const TumSequence& sequence, int threads) {
+  omp_set_num_threads(threads);
+  Stopwatch watch;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long k = 0; k < long(sequence.size()); ++k) sequence.load(size_t(k));
+  return watch.lap() / double(sequence.size());
+}
 
 void report_front_end(const std::string& name, const TumSequence& sequence, int threads) {
   Settings settings;
@@ -35,6 +47,12 @@ void report_front_end(const std::string& name, const TumSequence& sequence, int 
               "-> %.1f frames/s\n",
               result.seconds.prepare, result.seconds.track, result.seconds.total,
               timing.frames_per_second);
+  const double floor_ms = decode_floor_ms(sequence, result.threads);
+  const double end_to_end_ms = 1000 * result.seconds.total / double(result.frames.size());
+  std::printf(
+      "  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
+      "ms/frame: %.2fx the floor\n",
+      floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
 }
 
 void report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {

@@ -1,11 +1,13 @@
-// Our libpng reader and writer against OpenCV's codecs, as an independent reference.
+// Our PNG reader (lodepng + ISA-L, libpng for the rest) and writer against libpng alone and
+// OpenCV's codecs, as independent references.
 #include "io/png_file.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <fstream>
+#include <iterator>
 #include <opencv2/imgcodecs.hpp>
-#include <random>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -13,15 +15,54 @@
 namespace slamkit {
 namespace {
 
+namespace fs = std::filesystem;
+
 cv::Mat random_image(int type) {
   cv::Mat image(37, 53, type);
   cv::RNG rng(7);
-  rng.fill(image, cv::RNG::UNIFORM, 0, type == CV_16UC1 ? 65536 : 256);
+  rng.fill(image, cv::RNG::UNIFORM, 0, CV_MAT_DEPTH(type) == CV_16U ? 65536 : 256);
   return image;
 }
 
 bool same(const cv::Mat& a, const cv::Mat& b) {
   return a.type() == b.type() && a.size() == b.size() && cv::norm(a, b, cv::NORM_INF) == 0;
+}
+
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Offset of the first chunk of `type` (its length field) in a PNG's bytes.
+size_t find_chunk(const std::string& png, const std::string& type) {
+  const size_t at = png.find(type);
+  EXPECT_NE(at, std::string::npos) << type;
+  return at - 4;
+}
+
+// Recomputes the CRC of the chunk at `at`, so that a test's edit reaches the decoder.
+void fix_crc(std::string& png, size_t at) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(png.data());
+  const uint32_t length =
+      uint32_t(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 | bytes[at + 3];
+  const uLong crc = crc32(0, bytes + at + 4, length + 4);
+  for (int k = 0; k < 4; ++k) png[at + 8 + length + size_t(k)] = char(crc >> (24 - 8 * k));
+}
+
+void expect_input_error_naming(const fs::path& file) {
+  for (const auto reader : {read_png, read_png_with_libpng}) {
+    try {
+      reader(file);
+      ADD_FAILURE() << file << " was decoded";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 TEST(PngFile, OursAndOpenCvReadEachOthersFilesExactly) {
@@ -36,9 +77,39 @@ TEST(PngFile, OursAndOpenCvReadEachOthersFilesExactly) {
   }
 }
 
+TEST(PngFile, EveryLayoutDecodesAsLibpngDoes) {
+  const auto dir = test::temp_dir("png");
+  // The fast decoder's layouts, 16-bit colour included.
+  for (int type : {CV_8UC1, CV_8UC3, CV_8UC4, CV_16UC1, CV_16UC3, CV_16UC4}) {
+    const cv::Mat image = random_image(type);
+    cv::imwrite((dir / "image.png").string(), image);
+    EXPECT_TRUE(same(read_png(dir / "image.png"), image)) << "type " << type;
+    EXPECT_TRUE(same(read_png_with_libpng(dir / "image.png"), image)) << "type " << type;
+  }
+  // 1-bit grey goes to libpng, which expands it to 8 bits (0 and 255).
+  cv::Mat bilevel = random_image(CV_8UC1) > 127;
+  cv::imwrite((dir / "bilevel.png").string(), bilevel, {cv::IMWRITE_PNG_BILEVEL, 1});
+  EXPECT_TRUE(same(read_png(dir / "bilevel.png"), bilevel));
+}
+
+TEST(PngFile, EverySharedRealFrameDecodesAsLibpngDoes) {
+  SLAMKIT_REQUIRE_DATA(root, ".");
+  size_t colour = 0, depth = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".png") continue;
+    const cv::Mat ours = read_png(entry.path());
+    EXPECT_TRUE(same(ours, read_png_with_libpng(entry.path()))) << entry.path();
+    colour += ours.type() == CV_8UC3;
+    depth += ours.type() == CV_16UC1;
+  }
+  // fr2/desk's 50 pairs and fr1/desk's 9 at least; a full sequence has more.
+  EXPECT_GE(colour, 59u);
+  EXPECT_GE(depth, 59u);
+}
+
 TEST(PngFile, RealTumDepthDecodesAsOpenCvDoes) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg1_desk_9frames/depth");
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+  for (const auto& entry : fs::directory_iterator(folder)) {
     const cv::Mat ours = read_png(entry.path());
     EXPECT_EQ(ours.type(), CV_16UC1);
     EXPECT_TRUE(same(ours, cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED)));
@@ -50,14 +121,8 @@ TEST(PngFile, BadFilesAreInputErrorsNamingTheFile) {
   std::ofstream(dir / "text.png") << "not a png";
   std::ofstream(dir / "cut.png", std::ios::binary)
       << std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
-  for (const char* name : {"text.png", "cut.png", "missing.png"}) {
-    try {
-      read_png(dir / name);
-      FAIL() << name;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  }
+  for (const char* name : {"text.png", "cut.png", "missing.png"})
+    expect_input_error_naming(dir / name);
   EXPECT_THROW(write_png(dir / "f.png", cv::Mat(4, 4, CV_32FC1)), InputError);
 }
 
@@ -74,6 +139,40 @@ TEST(PngFile, HeadersClaimingHugeImagesAreRefusedBeforeAnyPixelMemory) {
                 std::string::npos)
           << e.what();
     }
+  }
+}
+
+TEST(PngFile, DamagedImageDataIsAnInputErrorNamingTheFile) {
+  const auto dir = test::temp_dir("png");
+  write_png(dir / "good.png", random_image(CV_16UC1));
+  const std::string good = file_bytes(dir / "good.png");
+  const size_t idat = find_chunk(good, "IDAT");
+
+  std::string flipped = good;  // a bit flipped in the image data: the chunk's CRC fails
+  flipped[idat + 20] = char(flipped[idat + 20] ^ 1);
+  write_bytes(dir / "crc.png", flipped);
+  fix_crc(flipped, idat);  // the CRC made to fit: the deflate data or Adler-32 fails
+  write_bytes(dir / "deflate.png", flipped);
+  write_bytes(dir / "short.png", good.substr(0, idat + 30));  // cut inside the image data
+  for (const char* name : {"crc.png", "deflate.png", "short.png"})
+    expect_input_error_naming(dir / name);
+}
+
+TEST(PngFile, HugeDeclaredSizeIsRefusedBeforeDecoding) {
+  const auto dir = test::temp_dir("png");
+  write_png(dir / "small.png", random_image(CV_8UC3));
+  std::string png = file_bytes(dir / "small.png");
+  const size_t ihdr = find_chunk(png, "IHDR");
+  // 200000 x 200000 RGB: 120 GB, from a file of a few kilobytes.
+  for (size_t field : {ihdr + 8, ihdr + 12})
+    png.replace(field, 4, std::string("\0\x03\x0d\x40", 4));
+  fix_crc(png, ihdr);
+  write_bytes(dir / "huge.png", png);
+  expect_input_error_naming(dir / "huge.png");
+  try {
+    read_png(dir / "huge.png");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("200000 x 200000"), std::string::npos) << e.what();
   }
 }
 

@@ -117,12 +117,13 @@ TEST(RunStatus, SigtermMidRunMarksTheFolderInterruptedAndLeavesNoTemporary) {
 }
 
 TEST(RunStatus, BadInputMidRunMarksTheFolderFailed) {
-  const fs::path sequence = test::temp_dir("run_status") / "seq";
+  const fs::path folder = test::temp_dir("run_status");  // emptied at each call: once
+  const fs::path sequence = folder / "seq";
   fs::copy(test::synthetic_sequence(synth::Preset::kDesk, 10), sequence,
            fs::copy_options::recursive);
   const auto depth = *fs::directory_iterator(sequence / "depth");
   std::ofstream(depth.path(), std::ios::trunc) << "not a png";
-  const fs::path dir = test::temp_dir("run_status") / "run";
+  const fs::path dir = folder / "run";
   std::string output;
   EXPECT_EQ(test::run_slamkit("run " + sequence.string() + " --out " + dir.string(), &output), 2);
   const nlohmann::json status = read_json(dir / "run.json");

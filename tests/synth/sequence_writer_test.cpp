@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "datasets/synth/renderer.h"
 #include "io/camera_yaml.h"
+#include "io/png_file.h"
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"
 #include "support/test_data.h"
@@ -191,6 +192,20 @@ TEST(SynthSequence, FilesRoundTripThroughTheProjectsReaders) {
   EXPECT_EQ(camera.cy, 239.5);
   EXPECT_TRUE(camera.distortion.is_zero());
   EXPECT_EQ(camera.depth_scale, 5000.0);
+}
+
+TEST(SynthSequence, FramesDecodeAsLibpngDoes) {
+  const fs::path folder = render("decode", Preset::kDesk, 4);
+  size_t frames = 0;
+  for (const char* kind : {"rgb", "depth"})
+    for (const auto& entry : fs::directory_iterator(folder / kind)) {
+      const cv::Mat ours = read_png(entry.path());
+      const cv::Mat libpng = read_png_with_libpng(entry.path());
+      ASSERT_EQ(ours.type(), libpng.type()) << entry.path();
+      EXPECT_EQ(cv::norm(ours, libpng, cv::NORM_INF), 0) << entry.path();
+      ++frames;
+    }
+  EXPECT_EQ(frames, 8u);
 }
 
 TEST(SynthSequence, BadSpecsAreInputErrorsNamingTheProblem) {
