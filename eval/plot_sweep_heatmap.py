@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from plot_style import STYLE, plt, save
+from plot_style import new_figure, save
 
 
 def main():
@@ -19,7 +19,6 @@ def main():
     parser.add_argument("--title", default="")
     parser.add_argument("--pdf", action="store_true")
     args = parser.parse_args()
-    plt.rcParams.update(STYLE)
 
     with open(args.table) as f:
         rows = list(csv.reader(f))
@@ -29,8 +28,8 @@ def main():
     best = np.nanmin(np.where(np.isnan(ate), np.inf, ate), axis=0)
     ratio = ate / np.where(np.isfinite(best) & (best > 0), best, np.nan)
 
-    fig, ax = plt.subplots(figsize=(max(5.0, 1.3 * len(sequences) + 3.0),
-                                    max(2.5, 0.45 * len(variants) + 1.6)))
+    fig, ax = new_figure((max(5.0, 1.3 * len(sequences) + 3.0),
+                          max(2.5, 0.45 * len(variants) + 1.6)))
     # The scale stops at 3x the best: one failed run (15x) would otherwise turn every 2x green.
     worst = float(np.nanmax(ratio)) if np.isfinite(ratio).any() else 1.5
     top = min(3.0, max(1.5, worst))

@@ -43,7 +43,7 @@ fi
 if $with_slurm; then
   # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)
   # with the MariaDB server it stores into, and munge for authentication.
-  packages+=(slurm-wlm slurmdbd munge mariadb-server-core)
+  packages+=(slurm-wlm slurmdbd munge mariadb-server-core mariadb-client-core)
 fi
 
 missing=()

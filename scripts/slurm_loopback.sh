@@ -24,13 +24,14 @@ skip() {
 
 [[ "$(id -u)" -eq 0 ]] || skip "needs root: the daemons run as root (SlurmUser=root)"
 missing=()
-for command in munged mungekey mariadb-install-db mariadbd slurmdbd slurmctld slurmd sacctmgr \
-  sbatch squeue sacct scancel sinfo; do
+for command in munged mungekey mariadb-install-db my_print_defaults mariadbd slurmdbd slurmctld \
+  slurmd sacctmgr sbatch squeue sacct scancel sinfo; do
   command -v "$command" >/dev/null || missing+=("$command")
 done
 ((${#missing[@]} == 0)) ||
   skip "missing ${missing[*]}: scripts/setup.sh --with-slurm installs slurm-wlm, slurmdbd," \
-    "munge and mariadb-server-core"
+    "munge, mariadb-server-core and mariadb-client-core (mariadb-install-db needs its" \
+    "my_print_defaults)"
 
 rm -rf "$state"
 mkdir -p "$state"/{munge,db,spool,slurmstate,log}

@@ -17,7 +17,17 @@ struct Fixture {
   fs::path dir = test::temp_dir("suite");
   SuiteContext context;
   Fixture() {
-    fs::create_directories(dir / "data" / "seq_a");
+    // A sequence folder the reader accepts: lists naming existing files and a camera (images
+    // are decoded only when a run reads them).
+    const fs::path seq = dir / "data" / "seq_a";
+    fs::create_directories(seq / "rgb");
+    fs::create_directories(seq / "depth");
+    std::ofstream(seq / "rgb" / "1.png") << "png";
+    std::ofstream(seq / "depth" / "1.png") << "png";
+    std::ofstream(seq / "rgb.txt") << "1.0 rgb/1.png\n";
+    std::ofstream(seq / "depth.txt") << "1.0 depth/1.png\n";
+    std::ofstream(seq / "calibration.yaml")
+        << "fx: 525\nfy: 525\ncx: 319.5\ncy: 239.5\nwidth: 640\nheight: 480\n";
     context.data_dir = dir / "data";
     context.presets = {"desk", "loop"};
     context.tum_names = [] { return std::vector<std::string>{"freiburg1_desk"}; };
