@@ -89,7 +89,8 @@ say "munged started (pid $(cat "$state/munge/munged.pid"))"
 
 # MariaDB for slurmdbd: loopback TCP only, no grant tables (nothing but this test reaches it).
 mariadb-install-db --no-defaults --datadir="$state/db/data" --user=root \
-  --auth-root-authentication-method=normal --skip-test-db >"$state/log/mariadb-install.log" 2>&1
+  --auth-root-authentication-method=normal --skip-test-db >"$state/log/mariadb-install.log" 2>&1 ||
+  { tail -n 20 "$state/log/mariadb-install.log"; fail "mariadb-install-db"; }
 mariadbd --no-defaults --datadir="$state/db/data" --user=root --bind-address=127.0.0.1 \
   --port="$db_port" --socket="$sockets/mysqld.sock" --pid-file="$state/db/mariadbd.pid" \
   --log-error="$state/log/mariadbd.log" --skip-grant-tables --innodb-buffer-pool-size=32M \
