@@ -111,6 +111,14 @@ TEST(TrajectoryPresets, EveryPresetKeepsTheCameraInFreeSpaceAtHandHeldSpeeds) {
   }
 }
 
+TEST(TrajectoryPresets, LoopAt150FramesStaysWithinTheTrackersFailureLimits) {
+  // The tracker's failure check: 3 m/s and 200 deg/s (loop tests run 150 and 200 frames).
+  for (const Step& step : steps(make_trajectory(Preset::kLoop, 150, 1))) {
+    ASSERT_LT(step.translation * kFrameRate, 2.0);
+    ASSERT_LT(step.rotation_deg * kFrameRate, 160);
+  }
+}
+
 TEST(TrajectoryPresets, LongGoesThroughBothRoomsAndBackToItsStart) {
   const auto poses = make_trajectory(Preset::kLong, 2000, 1);
   double west = 1e9, east = -1e9;
