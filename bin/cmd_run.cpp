@@ -113,6 +113,7 @@ void run(const RunArgs& args) {
     print_back_end_summary(seq, settings, result);
     if (settings.pipeline.evaluate) {
       evaluate_run_folder(seq, args.out, args.plot);
+      if (result.loop_pass.ran) evaluate_run_loops(seq, args.out);
       if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
     }
     std::printf("output      %s\n", args.out.c_str());
