@@ -61,6 +61,10 @@ void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out
     std::printf(" (precision %.2f)", *precision);
     update["loop_precision"] = *precision;
   }
+  const eval::LoopCriteria criteria;
+  if (a.accepted > 0)
+    std::printf(", %d within %.1f m and %.0f deg", a.same_place, criteria.max_distance_m,
+                criteria.max_angle_deg);
   if (a.episodes) std::printf("; %d of %d revisits found", a.episodes_found, *a.episodes);
   if (const auto recall = a.recall()) {
     std::printf(" (recall %.2f)", *recall);

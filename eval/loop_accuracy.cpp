@@ -18,11 +18,9 @@ size_t column(const std::filesystem::path& path, const TableRow& header, const s
   return size_t(it - header.fields.begin());
 }
 
-bool same_place(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
-                const LoopCriteria& criteria) {
-  const Eigen::Isometry3d d = a.inverse() * b;
-  return d.translation().norm() <= criteria.max_distance_m &&
-         Eigen::AngleAxisd(d.rotation()).angle() <= criteria.max_angle_deg * M_PI / 180.0;
+bool within(const Eigen::Isometry3d& d, double max_m, double max_deg) {
+  return d.translation().norm() <= max_m &&
+         Eigen::AngleAxisd(d.rotation()).angle() <= max_deg * M_PI / 180.0;
 }
 
 }  // namespace
@@ -34,13 +32,25 @@ std::vector<AcceptedLoop> read_accepted_loops(const std::filesystem::path& loops
   const size_t stamp = column(loops_csv, header, "keyframe_stamp");
   const size_t loop_stamp = column(loops_csv, header, "candidate_stamp");
   const size_t accepted = column(loops_csv, header, "accepted");
+  std::vector<size_t> pose;  // tx ty tz qx qy qz qw
+  for (const char* name : {"tx", "ty", "tz", "qx", "qy", "qz", "qw"})
+    pose.push_back(column(loops_csv, header, name));
+  const size_t last = std::max({stamp, loop_stamp, accepted, pose.front(), pose.back()});
   std::vector<AcceptedLoop> loops;
   for (size_t r = 1; r < rows.size(); ++r) {
     const TableRow& row = rows[r];
-    if (row.fields.size() <= std::max({stamp, loop_stamp, accepted}))
+    if (row.fields.size() <= last)
       throw_input_error(loops_csv.string(), row.line, "fewer fields than the header names");
     if (parse_number(loops_csv, row, accepted) == 0) continue;
-    loops.push_back({parse_number(loops_csv, row, stamp), parse_number(loops_csv, row, loop_stamp)});
+    double v[7];
+    for (size_t k = 0; k < 7; ++k) v[k] = parse_number(loops_csv, row, pose[k]);
+    AcceptedLoop loop{parse_number(loops_csv, row, stamp), parse_number(loops_csv, row, loop_stamp)};
+    const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
+    if (!(std::abs(q.norm() - 1) < 1e-3))
+      throw_input_error(loops_csv.string(), row.line, "the rotation is not a unit quaternion");
+    loop.measured.linear() = q.normalized().toRotationMatrix();
+    loop.measured.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+    loops.push_back(loop);
   }
   return loops;
 }
@@ -87,7 +97,9 @@ LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajector
       ++result.unjudged;
       continue;
     }
-    if (same_place(groundtruth.pose(*a), groundtruth.pose(*b), criteria)) {
+    const Eigen::Isometry3d truth = groundtruth.pose(*a).inverse() * groundtruth.pose(*b);
+    result.same_place += within(truth, criteria.max_distance_m, criteria.max_angle_deg);
+    if (within(truth.inverse() * loop.measured, criteria.max_error_m, criteria.max_error_deg)) {
       ++result.true_loops;
       true_stamps.push_back(loop.stamp);
     }

@@ -32,20 +32,23 @@ std::filesystem::path write(const std::filesystem::path& file, const std::string
 TEST(LoopAccuracy, ReadsTheAcceptedRowsOfLoopsCsv) {
   const auto dir = test::temp_dir("loop_accuracy_read");
   const auto csv = write(dir / "loops.csv",
-                         "keyframe,candidate,keyframe_stamp,candidate_stamp,score,accepted,reason\n"
-                         "40,0,120.000001,100,0.3,1,\"\"\n"
-                         "40,20,120.000001,110,0.2,0,\"kappa: 4 m, above 1 m\"\n"
-                         "41,1,119.5,101,0.2,1,\"\"\n");
+                         "keyframe,candidate,keyframe_stamp,candidate_stamp,score,tx,ty,tz,qx,qy,"
+                         "qz,qw,accepted,reason\n"
+                         "40,0,120.000001,100,0.3,0.5,0,0,0,0,0.6,0.8,1,\"\"\n"
+                         "40,20,120.000001,110,0.2,0,0,0,0,0,0,1,0,\"kappa: 4 m, above 1 m\"\n"
+                         "41,1,119.5,101,0.2,0,0,0,0,0,0,1,1,\"\"\n");
   const std::vector<AcceptedLoop> loops = read_accepted_loops(csv);
   ASSERT_EQ(loops.size(), 2u);
   EXPECT_DOUBLE_EQ(loops[0].stamp, 120.000001);
   EXPECT_DOUBLE_EQ(loops[0].loop_stamp, 100);
+  EXPECT_TRUE(loops[0].measured.translation().isApprox(Eigen::Vector3d(0.5, 0, 0)));
+  EXPECT_NEAR(Eigen::AngleAxisd(loops[0].measured.linear()).angle(), 2 * std::asin(0.6), 1e-12);
   EXPECT_DOUBLE_EQ(loops[1].stamp, 119.5);
 }
 
 TEST(LoopAccuracy, AFileWithoutTheStampColumnsNamesFileAndLine) {
   const auto dir = test::temp_dir("loop_accuracy_header");
-  const auto csv = write(dir / "loops.csv", "keyframe,candidate,accepted\n1,0,1\n");
+  const auto csv = write(dir / "loops.csv", "keyframe,candidate,accepted,reason\n1,0,1,\"\"\n");
   try {
     read_accepted_loops(csv);
     FAIL() << "no error";
@@ -71,27 +74,33 @@ TEST(LoopAccuracy, ConsecutiveRevisitingFramesAreOneEpisode) {
 }
 
 TEST(LoopAccuracy, TrueFalseAndUnjudgedLoopsAndTheRevisitsFound) {
+  const Trajectory gt = circle();
+  const auto relative = [&](int a, int b) { return gt.pose(a).inverse() * gt.pose(b); };
+  Eigen::Isometry3d off_by_30cm = relative(20, 0);
+  off_by_30cm.translation().x() += 0.3;
   const std::vector<AcceptedLoop> loops = {
-      {120, 100},  // back at the start: true
-      {120, 110},  // the far side, 4 m away: false
-      {119, 100},  // 0.63 m and 18 degrees from the start: false at 0.5 m
-      {150, 100},  // no groundtruth at 150: unjudged
+      {120, 100, relative(20, 0)},   // back at the start, measured right: true
+      {120, 110, relative(20, 0)},   // a look-alike: the far side (4 m) measured as here
+      {119, 100, relative(19, 0)},   // 0.63 m and 18 degrees apart, measured right: true
+      {150, 100, relative(20, 0)},   // no groundtruth at 150: unjudged
+      {120, 100, off_by_30cm},       // the right place measured 30 cm off: false
   };
   const std::vector<RevisitEpisode> episodes = {{119, 120}, {105, 106}};
-  const LoopAccuracy a = judge_loops(loops, circle(), episodes);
-  EXPECT_EQ(a.accepted, 4);
-  EXPECT_EQ(a.true_loops, 1);
+  const LoopAccuracy a = judge_loops(loops, gt, episodes);
+  EXPECT_EQ(a.accepted, 5);
+  EXPECT_EQ(a.true_loops, 2);
+  EXPECT_EQ(a.same_place, 2);  // the first and the last (0.63 m is beyond 0.5 m)
   EXPECT_EQ(a.unjudged, 1);
   EXPECT_EQ(a.false_loops(), 2);
-  EXPECT_DOUBLE_EQ(*a.precision(), 1.0 / 3);
+  EXPECT_DOUBLE_EQ(*a.precision(), 0.5);
   EXPECT_EQ(*a.episodes, 2);
   EXPECT_EQ(a.episodes_found, 1);
   EXPECT_DOUBLE_EQ(*a.recall(), 0.5);
 
-  LoopCriteria wide;
-  wide.max_distance_m = 0.7;
-  EXPECT_EQ(judge_loops(loops, circle(), std::nullopt, wide).true_loops, 2);
-  EXPECT_FALSE(judge_loops(loops, circle(), std::nullopt).recall());
+  LoopCriteria lenient;
+  lenient.max_error_m = 0.5;
+  EXPECT_EQ(judge_loops(loops, gt, std::nullopt, lenient).true_loops, 3);
+  EXPECT_FALSE(judge_loops(loops, gt, std::nullopt).recall());
 }
 
 TEST(LoopAccuracy, NoLoopAcceptedIsNoFalseLoop) {
