@@ -53,6 +53,24 @@ TEST(LoopPass, FindsOnlyTrueRevisitsOnTheSyntheticLoopAndCorrectsTheMap) {
   std::printf("loop pass: %zu loops; first-to-last keyframe error %.4f -> %.4f m\n",
               report.loops.size(), error(m.run.map), error(map));
   EXPECT_LT(error(map), 0.5 * error(m.run.map));
+
+  // Loop fusion: the last keyframe now observes points made at the start, so that global BA
+  // ties the two ends together.
+  const int last = int(map.keyframes().size()) - 1;
+  EXPECT_EQ(m.run.map.keyframe(last).shared_points.count(0), 0u);
+  EXPECT_GT(report.fused_points, 0);
+  EXPECT_GT(map.keyframe(last).shared_points.count(0), 0u);
+}
+
+TEST(LoopPass, WithoutLoopFusionTheEndsShareNoPoints) {
+  const test::LoopMap& m = test::loop_map();
+  Map map = m.run.map;
+  Settings settings;
+  settings.loop.fuse_points = false;
+  const LoopPassReport report = close_loops(map, m.sequence.camera(), settings, nullptr);
+  ASSERT_TRUE(report.correction.solved);
+  EXPECT_EQ(report.fused_points, 0);
+  EXPECT_EQ(map.keyframe(int(map.keyframes().size()) - 1).shared_points.count(0), 0u);
 }
 
 TEST(LoopPass, GapsBelowMinCorrectionLeaveTheMapAsItIs) {
