@@ -77,7 +77,7 @@ void parse_png(const fs::path& input, const fs::path&) { read_png(input); }
 regress::SuiteContext suite_context(const fs::path& scratch) {
   regress::SuiteContext context;
   context.data_dir = scratch;
-  context.presets = {"desk", "loop", "lowtexture", "jerk"};
+  context.presets = {"desk", "loop", "lowtexture", "jerk", "long", "lookalike"};
   context.tum_names = [] { return std::vector<std::string>{"freiburg1_desk", "freiburg2_desk"}; };
   context.download = false;
   return context;
