@@ -25,17 +25,20 @@ int fuse_loop_points(Map& map, const std::vector<LoopConstraint>& loops, const C
   gates.chi2_2d = settings.optimization.residual.chi2_2d;
   gates.chi2_3d = settings.optimization.residual.chi2_3d;
   gates.virtual_bf = settings.optimization.residual.virtual_bf;
-  int fused = 0;
+  // The batch accepts a loop at every keyframe of a revisit (ORB-SLAM2 one at a time), and their
+  // neighbourhoods overlap: each keyframe around the new ends is searched once, for the points
+  // around all the old ends (those out of its view cost a projection).
+  std::vector<int> loop_points;
+  std::set<int> seen, targets;
   for (const LoopConstraint& loop : loops) {
-    std::vector<int> loop_points;
-    std::set<int> seen;
     for (int k : with_neighbours(map, loop.loop_keyframe))
       for (int id : map.keyframe(k).point_ids)
         if (id >= 0 && !map.point(id).bad && seen.insert(id).second) loop_points.push_back(id);
-    const std::vector<int> group = with_neighbours(map, loop.keyframe);
-    for (int k : group) fused += int(fuse_into_keyframe(map, k, loop_points, camera, gates).size());
-    for (int k : group) map.update_connections(k);
+    for (int k : with_neighbours(map, loop.keyframe)) targets.insert(k);
   }
+  int fused = 0;
+  for (int k : targets) fused += int(fuse_into_keyframe(map, k, loop_points, camera, gates).size());
+  for (int k : targets) map.update_connections(k);
   return fused;
 }
 
