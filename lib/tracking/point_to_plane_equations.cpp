@@ -9,11 +9,24 @@ namespace {
 
 // Current points per block. Fixed, so that each block's sums, and the order in which they
 // are added, do not depend on the thread count.
-constexpr size_t kPointsPerBlock = 4096;
+constexpr long kPointsPerBlock = 4096;
 
-// One column per pair: (h, m). Its Gram matrix holds sum h h^T, sum m h and sum m^2.
-using Rows = Eigen::Matrix<float, 7, Eigen::Dynamic>;
 using Moments = Eigen::Matrix<double, 7, 7>;
+
+// One block's work, a column per quantity so that Eigen evaluates each step over the whole
+// block with SIMD. Allocated once per thread.
+struct BlockWork {
+  // The current points moved into the previous camera, their normals rotated likewise, and
+  // the previous pixel they project to (+0.5: the nearest one by truncation).
+  Eigen::Matrix<float, Eigen::Dynamic, 3> p, n;
+  Eigen::ArrayXf u, v;
+  // Per pair, the previous point and normal; for a point without a pair, q = p and N = 0,
+  // which zero its row.
+  Eigen::Matrix<float, Eigen::Dynamic, 3> q, N;
+  Eigen::ArrayXf paired;  // 1 for a pair, 0 for none
+  // The rows (h, m) of the linearised cost.
+  Eigen::Matrix<float, Eigen::Dynamic, 7> rows;
+};
 
 }  // namespace
 
@@ -21,18 +34,17 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
                                                const cv::Rect& box,
                                                const Eigen::Isometry3d& T_prev_curr,
                                                const PointToPlaneSettings& settings) {
-  const std::vector<int>& points = curr.with_normal;
-  const size_t blocks = (points.size() + kPointsPerBlock - 1) / kPointsPerBlock;
-  std::vector<Moments> moments(blocks);
-  std::vector<double> sum_p2(blocks);
-  std::vector<int> counts(blocks);
-  // Single precision per pair (twice the SIMD width, and the depth noise is ~1e4 times the
-  // rounding); each block's sums go to double before they are added up.
+  const long points = curr.with_normal.rows();
+  const long blocks = (points + kPointsPerBlock - 1) / kPointsPerBlock;
+  std::vector<Moments> moments(static_cast<size_t>(blocks));
+  std::vector<double> sum_p2(static_cast<size_t>(blocks));
+  std::vector<int> counts(static_cast<size_t>(blocks));
+  // Single precision per pair (twice the SIMD width of double, and the depth noise is ~1e4
+  // times the rounding); each block's sums go to double before they are added up.
   const Eigen::Matrix3f R = T_prev_curr.linear().cast<float>();
   const Eigen::Vector3f t = T_prev_curr.translation().cast<float>();
   const Camera& cam = prev.camera;
   const float fx = float(cam.fx), fy = float(cam.fy);
-  // +0.5: the nearest pixel by truncation, kept non-negative by the box test before it.
   const float cx = float(cam.cx + 0.5), cy = float(cam.cy + 0.5);
   const float x0 = float(box.x), x1 = float(box.x + box.width);
   const float y0 = float(box.y), y1 = float(box.y + box.height);
@@ -40,46 +52,72 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
   const float min_cos = float(std::cos(settings.max_normal_angle_deg * M_PI / 180));
 #pragma omp parallel
   {
-    Rows rows(7, long(kPointsPerBlock));  // this thread's buffer
+    BlockWork work;
 #pragma omp for schedule(static)
-    for (size_t c = 0; c < blocks; ++c) {
-      long n = 0;
-      double p2 = 0;
-      const size_t end = std::min(points.size(), (c + 1) * kPointsPerBlock);
-      for (size_t k = c * kPointsPerBlock; k < end; ++k) {
-        const SurfacePoint& current = curr.pixels[size_t(points[k])];
-        const Eigen::Vector3f p = R * current.p + t;
-        if (p.z() <= 0) continue;
-        const float x = fx * p.x() / p.z() + cx, y = fy * p.y() / p.z() + cy;
-        if (!(x >= x0 && x < x1 && y >= y0 && y < y1)) continue;
-        const SurfacePoint& previous = prev.at(int(x), int(y));
-        if (!previous.has_normal()) continue;
-        const Eigen::Vector3f d = p - previous.p;
-        if (d.squaredNorm() > max_sq) continue;
-        if ((R * current.n).dot(previous.n) < min_cos) continue;
-        // Fixed-size writes: a comma initialiser into the dynamic column copies the
-        // 3-vectors with 4-float loads (GCC: -Warray-bounds).
-        rows.col(n).head<3>() = previous.n.cross(p);
-        rows.col(n).segment<3>(3) = previous.n;
-        rows(6, n++) = d.dot(previous.n);
-        p2 += double(p.squaredNorm());
+    for (long c = 0; c < blocks; ++c) {
+      const long begin = c * kPointsPerBlock;
+      const long size = std::min(kPointsPerBlock, points - begin);
+      const auto block = curr.with_normal.middleRows(begin, size);
+      // p' = R p + t and n' = R n, a column (coordinate) at a time.
+      work.p.resize(size, 3);
+      work.n.resize(size, 3);
+      for (int r = 0; r < 3; ++r) {
+        work.p.col(r).array() = R(r, 0) * block.col(0).array() + R(r, 1) * block.col(1).array() +
+                                R(r, 2) * block.col(2).array() + t(r);
+        work.n.col(r) = R(r, 0) * block.col(3) + R(r, 1) * block.col(4) + R(r, 2) * block.col(5);
       }
-      // The Gram matrix by Eigen's symmetric rank update (vectorised), lower triangle.
-      Eigen::Matrix<float, 7, 7> gram = Eigen::Matrix<float, 7, 7>::Zero();
-      gram.selfadjointView<Eigen::Lower>().rankUpdate(rows.leftCols(n));
-      moments[c] = gram.cast<double>();
-      sum_p2[c] = p2;
-      counts[c] = int(n);
+      work.u = fx * work.p.col(0).array() / work.p.col(2).array() + cx;
+      work.v = fy * work.p.col(1).array() / work.p.col(2).array() + cy;
+      // Projective association, point by point (a gather: no SIMD).
+      work.q.resize(size, 3);
+      work.N.resize(size, 3);
+      work.paired.resize(size);
+      for (long k = 0; k < size; ++k) {
+        const float u = work.u(k), v = work.v(k);
+        bool paired = work.p(k, 2) > 0 && u >= x0 && u < x1 && v >= y0 && v < y1;
+        const int j = paired ? prev.index(int(u), int(v)) : 0;
+        paired = paired && prev.has_normal(j);
+        if (paired) {
+          const auto q = prev.pixels.row(j).head<3>();
+          const auto N = prev.pixels.row(j).tail<3>();
+          paired = (work.p.row(k) - q).squaredNorm() <= max_sq && work.n.row(k).dot(N) >= min_cos;
+          work.q.row(k) = q;
+          work.N.row(k) = N;
+        }
+        if (!paired) {
+          work.q.row(k) = work.p.row(k);
+          work.N.row(k).setZero();
+        }
+        work.paired(k) = paired;
+      }
+      // h = (N x p, N), m = (p - q).N, for the whole block at once.
+      const auto px = work.p.col(0).array(), py = work.p.col(1).array(), pz = work.p.col(2).array();
+      const auto Nx = work.N.col(0).array(), Ny = work.N.col(1).array(), Nz = work.N.col(2).array();
+      work.rows.resize(size, 7);
+      work.rows.col(0).array() = Ny * pz - Nz * py;
+      work.rows.col(1).array() = Nz * px - Nx * pz;
+      work.rows.col(2).array() = Nx * py - Ny * px;
+      work.rows.middleCols<3>(3) = work.N;
+      work.rows.col(6).array() = (px - work.q.col(0).array()) * Nx +
+                                 (py - work.q.col(1).array()) * Ny +
+                                 (pz - work.q.col(2).array()) * Nz;
+      // The Gram matrix of the rows: 28 dot products (Eigen's vectorised dot).
+      Moments& gram = moments[size_t(c)];
+      for (int i = 0; i < 7; ++i)
+        for (int k = 0; k <= i; ++k)
+          gram(i, k) = gram(k, i) = double(work.rows.col(i).dot(work.rows.col(k)));
+      sum_p2[size_t(c)] = double((work.p.rowwise().squaredNorm().array() * work.paired).sum());
+      counts[size_t(c)] = int(work.paired.sum());
     }
   }
   Moments total = Moments::Zero();
   PointToPlaneEquations eq;
-  for (size_t c = 0; c < blocks; ++c) {  // in block order: deterministic
-    total += moments[c];
-    eq.sum_p2 += sum_p2[c];
-    eq.count += counts[c];
+  for (long c = 0; c < blocks; ++c) {  // in block order: deterministic
+    total += moments[size_t(c)];
+    eq.sum_p2 += sum_p2[size_t(c)];
+    eq.count += counts[size_t(c)];
   }
-  eq.H = total.topLeftCorner<6, 6>().selfadjointView<Eigen::Lower>();
+  eq.H = total.topLeftCorner<6, 6>();
   eq.b = total.block<1, 6>(6, 0).transpose();
   eq.sum_sq = total(6, 6);
   return eq;

@@ -1,6 +1,5 @@
 #include "tracking/surface_pyramid.h"
 
-#include <Eigen/Geometry>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
@@ -11,21 +10,35 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-// Back-projection of pixel column u / row v: x = xs[u] * z, y = ys[v] * z.
-std::vector<double> ray_factors(int size, double c, double f) {
-  std::vector<double> factors(size_t(size), 0);
-  for (int i = 0; i < size; ++i) factors[size_t(i)] = (i - c) / f;
+// Back-projection of pixel column u / row v: x = factors[u] * z, y = factors[v] * z.
+std::vector<float> ray_factors(int size, double c, double f) {
+  std::vector<float> factors(size_t(size), 0);
+  for (int i = 0; i < size; ++i) factors[size_t(i)] = float((i - c) / f);
   return factors;
 }
 
+// The loops below are written by hand (no library computes these normals) as plain loops
+// over a row, which GCC vectorises (`omp simd`: the rows never overlap; sqrt without errno:
+// lib/CMakeLists.txt): every value is computed, then `none` is added, 0 or NaN where there
+// is no point or normal. Comparisons with NaN are false, so a missing depth fails the
+// depth-edge test too.
 Surface make_surface(const cv::Mat& depth, const Camera& cam,
                      const PointToPlaneSettings& settings) {
   Surface s;
   s.camera = cam;
   s.width = depth.cols, s.height = depth.rows;
-  s.pixels.resize(size_t(s.width) * size_t(s.height));
-  const std::vector<double> xs = ray_factors(s.width, cam.cx, cam.fx);
-  const std::vector<double> ys = ray_factors(s.height, cam.cy, cam.fy);
+  const int w = s.width, h = s.height;
+  s.pixels.resize(long(w) * h, 6);
+  float* X = s.pixels.col(0).data();
+  float* Y = s.pixels.col(1).data();
+  float* Z = s.pixels.col(2).data();
+  float* NX = s.pixels.col(3).data();
+  float* NY = s.pixels.col(4).data();
+  float* NZ = s.pixels.col(5).data();
+  const std::vector<float> x_factors = ray_factors(w, cam.cx, cam.fx);
+  const std::vector<float> y_factors = ray_factors(h, cam.cy, cam.fy);
+  const float* xs = x_factors.data();
+  const float* ys = y_factors.data();
   // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does.
   // The residual itself still uses the measured points.
   cv::Mat smoothed;
@@ -35,27 +48,24 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
                         settings.normal_smoothing_diameter / 2.0);
   else
     smoothed = depth;
-  // The points normals are taken from: smoothed depth, where the measured depth is valid.
-  std::vector<Eigen::Vector3f> source(s.pixels.size());
-  const Eigen::Vector3f none = Eigen::Vector3f::Constant(kNaN);
+  // The depth the normals are taken from: smoothed, NaN where the measurement is not valid.
+  std::vector<float> source(size_t(w) * size_t(h));
+  const float min_depth = float(cam.min_depth), max_depth = float(cam.max_depth);
 #pragma omp parallel for schedule(static)
-  for (int v = 0; v < s.height; ++v) {
-    const float* measured = depth.ptr<float>(v);
-    const float* smooth = smoothed.ptr<float>(v);
-    const size_t row = size_t(v) * size_t(s.width);
-    for (int u = 0; u < s.width; ++u) {
-      SurfacePoint& sp = s.pixels[row + size_t(u)];
-      sp.n = none;
-      const double z = measured[u];
-      if (!cam.is_valid_depth(z)) {
-        sp.p = none;
-        source[row + size_t(u)] = none;
-        continue;
-      }
-      sp.p = Eigen::Vector3d(xs[size_t(u)] * z, ys[size_t(v)] * z, z).cast<float>();
-      const double zs = smooth[u];
-      source[row + size_t(u)] =
-          Eigen::Vector3d(xs[size_t(u)] * zs, ys[size_t(v)] * zs, zs).cast<float>();
+  for (int v = 0; v < h; ++v) {
+    const float* z = depth.ptr<float>(v);
+    const float* zs = smoothed.ptr<float>(v);
+    const size_t row = size_t(v) * size_t(w);
+    float *x = X + row, *y = Y + row, *zv = Z + row, *src = source.data() + row;
+    float *nx = NX + row, *ny = NY + row, *nz = NZ + row;
+#pragma omp simd
+    for (int u = 0; u < w; ++u) {
+      const float none = (z[u] >= min_depth) & (z[u] <= max_depth) ? 0.0f : kNaN;
+      x[u] = xs[u] * z[u] + none;
+      y[u] = ys[v] * z[u] + none;
+      zv[u] = z[u] + none;
+      src[u] = zs[u] + none;
+      nx[u] = ny[u] = nz[u] = kNaN;  // the normal pass fills those it can
     }
   }
   // SPEC: N = (q(u+1,v) - q(u,v)) x (q(u,v+1) - q(u,v)), normalised. (beyond) Central
@@ -65,30 +75,41 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
   // Neighbours across a depth edge would give the normal of a surface that is not there.
   const float max_depth_ratio = float(settings.max_neighbour_depth_ratio);
   const int back = settings.central_difference_normals ? 1 : 0;
-  const size_t w = size_t(s.width);
 #pragma omp parallel for schedule(static)
-  for (int v = back; v < s.height - 1; ++v) {
-    for (int u = back; u + 1 < s.width; ++u) {
-      const size_t i = size_t(v) * w + size_t(u);
-      const Eigen::Vector3f& q = source[i];
-      const Eigen::Vector3f& qu0 = source[i - size_t(back)];
-      const Eigen::Vector3f& qu = source[i + 1];
-      const Eigen::Vector3f& qv0 = source[i - size_t(back) * w];
-      const Eigen::Vector3f& qv = source[i + w];
-      if (std::isnan(q.z()) || std::isnan(qu.z()) || std::isnan(qv.z()) || std::isnan(qu0.z()) ||
-          std::isnan(qv0.z()))
-        continue;
-      const float max_step = max_depth_ratio * q.z();
-      const auto too_far = [&](const Eigen::Vector3f& p) {
-        return std::abs(p.z() - q.z()) > max_step;
-      };
-      if (too_far(qu) || too_far(qv) || too_far(qu0) || too_far(qv0)) continue;
-      const Eigen::Vector3f n = (qu - qu0).cross(qv - qv0);
-      if (n.squaredNorm() > 0) s.pixels[i].n = n.normalized();
+  for (int v = back; v < h - 1; ++v) {
+    const float* zc = source.data() + size_t(v) * size_t(w);
+    const float* zu = zc - back * w;  // row v - back
+    const float* zd = zc + w;         // row v + 1
+    const float yc = ys[v], yu = ys[v - back], yd = ys[v + 1];
+    const size_t row = size_t(v) * size_t(w);
+    float *nx = NX + row, *ny = NY + row, *nz = NZ + row;
+#pragma omp simd
+    for (int u = back; u < w - 1; ++u) {
+      const float z = zc[u], zl = zc[u - back], zr = zc[u + 1];
+      const float max_step = max_depth_ratio * z;
+      const bool surface = (std::abs(zr - z) <= max_step) & (std::abs(zl - z) <= max_step) &
+                           (std::abs(zd[u] - z) <= max_step) & (std::abs(zu[u] - z) <= max_step);
+      // a = q(u+1) - q(u-back), b = q(v+1) - q(v-back), n = a x b.
+      const float ax = xs[u + 1] * zr - xs[u - back] * zl, ay = yc * zr - yc * zl, az = zr - zl;
+      const float bx = xs[u] * zd[u] - xs[u] * zu[u], by = yd * zd[u] - yu * zu[u];
+      const float bz = zd[u] - zu[u];
+      const float n_x = ay * bz - az * by, n_y = az * bx - ax * bz, n_z = ax * by - ay * bx;
+      const float norm = std::sqrt(n_x * n_x + n_y * n_y + n_z * n_z);
+      const float none = surface & (norm > 0) ? 0.0f : kNaN;
+      nx[u] = n_x / norm + none;
+      ny[u] = n_y / norm + none;
+      nz[u] = n_z / norm + none;
     }
   }
-  for (size_t i = 0; i < s.pixels.size(); ++i)
-    if (s.pixels[i].has_normal()) s.with_normal.push_back(int(i));
+  long count = 0;
+  for (long i = 0; i < s.pixels.rows(); ++i) count += !std::isnan(NZ[i]);
+  s.with_normal.resize(count, 6);
+  for (int c = 0; c < 6; ++c) {
+    const float* from = s.pixels.col(c).data();
+    float* to = s.with_normal.col(c).data();
+    for (long i = 0, k = 0; i < s.pixels.rows(); ++i)
+      if (!std::isnan(NZ[i])) to[k++] = from[i];
+  }
   return s;
 }
 

@@ -12,19 +12,21 @@
 
 namespace slamkit {
 
-// One pixel: its point and unit normal in the camera frame. A pixel without a normal (no
-// valid depth, a depth edge, a neighbour missing) has NaN in n and takes no part.
-struct SurfacePoint {
-  Eigen::Vector3f p, n;
-  bool has_normal() const { return !std::isnan(n.z()); }
-};
+// One row per pixel or point: x y z of the point, then nx ny nz of its unit normal, in the
+// camera frame. A column per coordinate, so that whole columns go through SIMD.
+using SurfaceColumns = Eigen::Matrix<float, Eigen::Dynamic, 6>;
 
 struct Surface {
   Camera camera;  // the level's pinhole camera (camera_at_level)
   int width = 0, height = 0;
-  std::vector<SurfacePoint> pixels;  // row-major
-  std::vector<int> with_normal;      // indices of the pixels that have a normal, ascending
-  const SurfacePoint& at(int u, int v) const { return pixels[size_t(v) * size_t(width) + u]; }
+  // Every pixel, row-major: what the previous surface is looked up in. A pixel without a
+  // normal (no valid depth, a depth edge, a neighbour missing) has NaN in its normal and
+  // takes no part; without a valid depth its point is NaN too.
+  SurfaceColumns pixels;
+  // The pixels that have a normal, in the same order: what the current surface is read as.
+  SurfaceColumns with_normal;
+  int index(int u, int v) const { return v * width + u; }
+  bool has_normal(int i) const { return !std::isnan(pixels(i, 5)); }
 };
 
 // [0] at the depth image's resolution, [l] from the depth halved l times (depth_pyramid);

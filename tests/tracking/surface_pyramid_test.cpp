@@ -17,6 +17,10 @@ cv::Mat plane_depth(const Camera& cam, const Eigen::Vector3d& n, double d) {
   return depth;
 }
 
+Eigen::Vector3d normal_at(const Surface& s, int u, int v) {
+  return s.pixels.row(s.index(u, v)).tail<3>().transpose().cast<double>();
+}
+
 TEST(SurfacePyramid, TiltedPlaneHasItsPointsAndNormalOnEveryLevel) {
   const Camera cam = Camera::freiburg3();
   const Eigen::Vector3d n = Eigen::Vector3d(0.3, -0.2, 1).normalized();
@@ -28,12 +32,13 @@ TEST(SurfacePyramid, TiltedPlaneHasItsPointsAndNormalOnEveryLevel) {
   EXPECT_EQ(pyramid[1].camera.fx, cam.fx / 2);
   for (const Surface& s : pyramid) {
     // Central differences: every pixel but the border ones.
-    EXPECT_EQ(s.with_normal.size(), size_t(s.width - 2) * size_t(s.height - 2));
+    EXPECT_EQ(s.with_normal.rows(), long(s.width - 2) * (s.height - 2));
     double normal_error = 0, plane_distance = 0;
-    for (int i : s.with_normal) {
-      const SurfacePoint& sp = s.pixels[size_t(i)];
-      normal_error = std::max(normal_error, 1 - std::abs(sp.n.cast<double>().dot(n)));
-      plane_distance = std::max(plane_distance, std::abs(n.dot(sp.p.cast<double>()) - 2.0));
+    for (long i = 0; i < s.with_normal.rows(); ++i) {
+      const Eigen::Vector3d p = s.with_normal.row(i).head<3>().transpose().cast<double>();
+      const Eigen::Vector3d normal = s.with_normal.row(i).tail<3>().transpose().cast<double>();
+      normal_error = std::max(normal_error, 1 - std::abs(normal.dot(n)));
+      plane_distance = std::max(plane_distance, std::abs(n.dot(p) - 2.0));
     }
     EXPECT_LT(normal_error, 1e-6) << s.width;
     // Level 1 holds a measured depth of each 2x2 block (the lower median), not the centre's.
@@ -43,7 +48,7 @@ TEST(SurfacePyramid, TiltedPlaneHasItsPointsAndNormalOnEveryLevel) {
   const Surface smoothed = make_surface_pyramid(plane_depth(cam, n, 2.0), cam, {})[0];
   for (int v = 8; v < cam.height - 8; v += 7)
     for (int u = 8; u < cam.width - 8; u += 7)
-      EXPECT_LT(1 - std::abs(smoothed.at(u, v).n.cast<double>().dot(n)), 1e-5) << u << " " << v;
+      EXPECT_LT(1 - std::abs(normal_at(smoothed, u, v).dot(n)), 1e-5) << u << " " << v;
 }
 
 TEST(SurfacePyramid, NoNormalAcrossADepthEdgeOrAHole) {
@@ -52,17 +57,17 @@ TEST(SurfacePyramid, NoNormalAcrossADepthEdgeOrAHole) {
   depth.colRange(320, 640).setTo(3.0);  // an edge between columns 319 and 320
   depth.at<float>(100, 100) = 0;        // a hole
   const Surface s = make_surface_pyramid(depth, cam, PointToPlaneSettings{})[0];
-  EXPECT_FALSE(s.at(319, 240).has_normal());
-  EXPECT_FALSE(s.at(320, 240).has_normal());
-  EXPECT_TRUE(s.at(318, 240).has_normal());
-  EXPECT_TRUE(std::isnan(s.at(100, 100).p.z()));  // no measurement, no point
-  EXPECT_FALSE(s.at(101, 100).has_normal());      // its neighbour misses one
-  EXPECT_FALSE(s.at(0, 240).has_normal());        // the border has no left neighbour
-  // with_normal lists exactly the pixels with a normal, in order.
-  std::vector<int> expected;
-  for (size_t i = 0; i < s.pixels.size(); ++i)
-    if (s.pixels[i].has_normal()) expected.push_back(int(i));
-  EXPECT_EQ(s.with_normal, expected);
+  EXPECT_FALSE(s.has_normal(s.index(319, 240)));
+  EXPECT_FALSE(s.has_normal(s.index(320, 240)));
+  EXPECT_TRUE(s.has_normal(s.index(318, 240)));
+  EXPECT_TRUE(std::isnan(s.pixels(s.index(100, 100), 2)));  // no measurement, no point
+  EXPECT_FALSE(s.has_normal(s.index(101, 100)));            // its neighbour misses one
+  EXPECT_FALSE(s.has_normal(s.index(0, 240)));              // the border has no left neighbour
+  // with_normal holds exactly the pixels with a normal, in order.
+  std::vector<int> rows;
+  for (int i = 0; i < int(s.pixels.rows()); ++i)
+    if (s.has_normal(i)) rows.push_back(i);
+  EXPECT_EQ(s.with_normal, s.pixels(rows, Eigen::all));
 }
 
 TEST(SurfacePyramid, SameSurfacesWhateverTheThreadCount) {
@@ -77,7 +82,7 @@ TEST(SurfacePyramid, SameSurfacesWhateverTheThreadCount) {
   omp_set_num_threads(threads);
   ASSERT_EQ(one.pixels.size(), three.pixels.size());
   EXPECT_EQ(0, std::memcmp(one.pixels.data(), three.pixels.data(),
-                           one.pixels.size() * sizeof(SurfacePoint)));  // NaN for NaN too
+                           size_t(one.pixels.size()) * sizeof(float)));  // NaN for NaN too
   EXPECT_EQ(one.with_normal, three.with_normal);
 }
 
