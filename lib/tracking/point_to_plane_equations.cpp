@@ -11,22 +11,61 @@ namespace {
 // are added, do not depend on the thread count.
 constexpr long kPointsPerBlock = 4096;
 
+using Columns3 = Eigen::Matrix<float, Eigen::Dynamic, 3>;
 using Moments = Eigen::Matrix<double, 7, 7>;
 
-// One block's work, a column per quantity so that Eigen evaluates each step over the whole
+// One block's work, a column per quantity, so that Eigen evaluates each step over the whole
 // block with SIMD. Allocated once per thread.
 struct BlockWork {
-  // The current points moved into the previous camera, their normals rotated likewise, and
+  // The current points moved into the previous camera and their normals rotated likewise;
   // the previous pixel they project to (+0.5: the nearest one by truncation).
-  Eigen::Matrix<float, Eigen::Dynamic, 3> p, n;
+  Columns3 p, n;
   Eigen::ArrayXf u, v;
   // Per pair, the previous point and normal; for a point without a pair, q = p and N = 0,
   // which zero its row.
-  Eigen::Matrix<float, Eigen::Dynamic, 3> q, N;
+  Columns3 q, N;
   Eigen::ArrayXf paired;  // 1 for a pair, 0 for none
-  // The rows (h, m) of the linearised cost.
-  Eigen::Matrix<float, Eigen::Dynamic, 7> rows;
+  Eigen::Matrix<float, Eigen::Dynamic, 7> rows;  // (h, m) of the linearised cost
 };
+
+// What projective association accepts: the previous pixel inside the box, and there a point
+// no farther than max_pair_distance with a normal within max_normal_angle_deg.
+struct Gate {
+  float x0, x1, y0, y1;
+  float max_sq, min_cos;
+};
+
+// Pairs each point of the block with the previous pixel it projects to. A gather, so point
+// by point, by hand, without branches: a pixel without a normal (NaN) fails the angle test.
+void associate(const Surface& prev, const Gate& gate, long size, BlockWork& work) {
+  const float *X = prev.pixels.col(0).data(), *Y = prev.pixels.col(1).data(),
+              *Z = prev.pixels.col(2).data();
+  const float *NX = prev.pixels.col(3).data(), *NY = prev.pixels.col(4).data(),
+              *NZ = prev.pixels.col(5).data();
+  const float *px = work.p.col(0).data(), *py = work.p.col(1).data(), *pz = work.p.col(2).data();
+  const float *nx = work.n.col(0).data(), *ny = work.n.col(1).data(), *nz = work.n.col(2).data();
+  work.q.resize(size, 3);
+  work.N.resize(size, 3);
+  work.paired.resize(size);
+  float *qx = work.q.col(0).data(), *qy = work.q.col(1).data(), *qz = work.q.col(2).data();
+  float *Nx = work.N.col(0).data(), *Ny = work.N.col(1).data(), *Nz = work.N.col(2).data();
+  for (long k = 0; k < size; ++k) {
+    const float u = work.u(k), v = work.v(k);
+    const bool inside = (pz[k] > 0) & (u >= gate.x0) & (u < gate.x1) & (v >= gate.y0) &
+                        (v < gate.y1);
+    const int j = inside ? prev.index(int(u), int(v)) : 0;
+    const float dx = px[k] - X[j], dy = py[k] - Y[j], dz = pz[k] - Z[j];
+    const bool paired = inside & (dx * dx + dy * dy + dz * dz <= gate.max_sq) &
+                        (nx[k] * NX[j] + ny[k] * NY[j] + nz[k] * NZ[j] >= gate.min_cos);
+    qx[k] = paired ? X[j] : px[k];
+    qy[k] = paired ? Y[j] : py[k];
+    qz[k] = paired ? Z[j] : pz[k];
+    Nx[k] = paired ? NX[j] : 0.0f;
+    Ny[k] = paired ? NY[j] : 0.0f;
+    Nz[k] = paired ? NZ[j] : 0.0f;
+    work.paired(k) = paired ? 1.0f : 0.0f;
+  }
+}
 
 }  // namespace
 
@@ -46,10 +85,12 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
   const Camera& cam = prev.camera;
   const float fx = float(cam.fx), fy = float(cam.fy);
   const float cx = float(cam.cx + 0.5), cy = float(cam.cy + 0.5);
-  const float x0 = float(box.x), x1 = float(box.x + box.width);
-  const float y0 = float(box.y), y1 = float(box.y + box.height);
-  const float max_sq = float(settings.max_pair_distance * settings.max_pair_distance);
-  const float min_cos = float(std::cos(settings.max_normal_angle_deg * M_PI / 180));
+  const Gate gate{float(box.x),
+                  float(box.x + box.width),
+                  float(box.y),
+                  float(box.y + box.height),
+                  float(settings.max_pair_distance * settings.max_pair_distance),
+                  float(std::cos(settings.max_normal_angle_deg * M_PI / 180))};
 #pragma omp parallel
   {
     BlockWork work;
@@ -68,28 +109,7 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
       }
       work.u = fx * work.p.col(0).array() / work.p.col(2).array() + cx;
       work.v = fy * work.p.col(1).array() / work.p.col(2).array() + cy;
-      // Projective association, point by point (a gather: no SIMD).
-      work.q.resize(size, 3);
-      work.N.resize(size, 3);
-      work.paired.resize(size);
-      for (long k = 0; k < size; ++k) {
-        const float u = work.u(k), v = work.v(k);
-        bool paired = work.p(k, 2) > 0 && u >= x0 && u < x1 && v >= y0 && v < y1;
-        const int j = paired ? prev.index(int(u), int(v)) : 0;
-        paired = paired && prev.has_normal(j);
-        if (paired) {
-          const auto q = prev.pixels.row(j).head<3>();
-          const auto N = prev.pixels.row(j).tail<3>();
-          paired = (work.p.row(k) - q).squaredNorm() <= max_sq && work.n.row(k).dot(N) >= min_cos;
-          work.q.row(k) = q;
-          work.N.row(k) = N;
-        }
-        if (!paired) {
-          work.q.row(k) = work.p.row(k);
-          work.N.row(k).setZero();
-        }
-        work.paired(k) = paired;
-      }
+      associate(prev, gate, size, work);
       // h = (N x p, N), m = (p - q).N, for the whole block at once.
       const auto px = work.p.col(0).array(), py = work.p.col(1).array(), pz = work.p.col(2).array();
       const auto Nx = work.N.col(0).array(), Ny = work.N.col(1).array(), Nz = work.N.col(2).array();
@@ -106,7 +126,8 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
       for (int i = 0; i < 7; ++i)
         for (int k = 0; k <= i; ++k)
           gram(i, k) = gram(k, i) = double(work.rows.col(i).dot(work.rows.col(k)));
-      sum_p2[size_t(c)] = double((work.p.rowwise().squaredNorm().array() * work.paired).sum());
+      sum_p2[size_t(c)] =
+          double(((px.square() + py.square() + pz.square()) * work.paired).sum());
       counts[size_t(c)] = int(work.paired.sum());
     }
   }
