@@ -1,5 +1,6 @@
 #include "tracking/depth_pyramid.h"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -27,8 +28,11 @@ cv::Mat downsample_depth(const cv::Mat& depth) {
         n += block[k] > 0;
         s[k] = block[k] > 0 ? block[k] : std::numeric_limits<float>::infinity();
       }
-      for (const auto& [a, b] : kSortFour)
-        if (s[b] < s[a]) std::swap(s[a], s[b]);
+      for (const auto& [a, b] : kSortFour) {  // min and max: no branch to mispredict
+        const float low = std::min(s[a], s[b]);
+        s[b] = std::max(s[a], s[b]);
+        s[a] = low;
+      }
       out[u] = n > 0 ? s[(n - 1) / 2] : 0.0f;
     }
   }

@@ -7,9 +7,9 @@
 namespace slamkit {
 namespace {
 
-// Current points per block. Fixed, so that each block's sums, and the order in which they
+// Current pixels per block. Fixed, so that each block's sums, and the order in which they
 // are added, do not depend on the thread count.
-constexpr long kPointsPerBlock = 4096;
+constexpr long kPixelsPerBlock = 4096;
 
 using Columns3 = Eigen::Matrix<float, Eigen::Dynamic, 3>;
 using Moments = Eigen::Matrix<double, 7, 7>;
@@ -21,10 +21,9 @@ struct BlockWork {
   // the previous pixel they project to (+0.5: the nearest one by truncation).
   Columns3 p, n;
   Eigen::ArrayXf u, v;
-  // Per pair, the previous point and normal; for a point without a pair, q = p and N = 0,
-  // which zero its row.
+  // Per pair, the previous point and normal. A pixel without a pair gets p = q = N = 0
+  // (its point may be NaN), which zeroes its row.
   Columns3 q, N;
-  Eigen::ArrayXf paired;  // 1 for a pair, 0 for none
   Eigen::Matrix<float, Eigen::Dynamic, 7> rows;  // (h, m) of the linearised cost
 };
 
@@ -36,35 +35,40 @@ struct Gate {
 };
 
 // Pairs each point of the block with the previous pixel it projects to. A gather, so point
-// by point, by hand, without branches: a pixel without a normal (NaN) fails the angle test.
-void associate(const Surface& prev, const Gate& gate, long size, BlockWork& work) {
+// by point, by hand, without branches: a pixel without a normal, here or there, has NaN in
+// it and fails the angle test. Returns the number of pairs.
+int associate(const Surface& prev, const Gate& gate, long size, BlockWork& work) {
   const float *X = prev.pixels.col(0).data(), *Y = prev.pixels.col(1).data(),
               *Z = prev.pixels.col(2).data();
   const float *NX = prev.pixels.col(3).data(), *NY = prev.pixels.col(4).data(),
               *NZ = prev.pixels.col(5).data();
-  const float *px = work.p.col(0).data(), *py = work.p.col(1).data(), *pz = work.p.col(2).data();
+  float *px = work.p.col(0).data(), *py = work.p.col(1).data(), *pz = work.p.col(2).data();
   const float *nx = work.n.col(0).data(), *ny = work.n.col(1).data(), *nz = work.n.col(2).data();
   work.q.resize(size, 3);
   work.N.resize(size, 3);
-  work.paired.resize(size);
   float *qx = work.q.col(0).data(), *qy = work.q.col(1).data(), *qz = work.q.col(2).data();
   float *Nx = work.N.col(0).data(), *Ny = work.N.col(1).data(), *Nz = work.N.col(2).data();
+  int pairs = 0;
   for (long k = 0; k < size; ++k) {
     const float u = work.u(k), v = work.v(k);
-    const bool inside = (pz[k] > 0) & (u >= gate.x0) & (u < gate.x1) & (v >= gate.y0) &
-                        (v < gate.y1);
+    const bool inside =
+        (pz[k] > 0) & (u >= gate.x0) & (u < gate.x1) & (v >= gate.y0) & (v < gate.y1);
     const int j = inside ? prev.index(int(u), int(v)) : 0;
     const float dx = px[k] - X[j], dy = py[k] - Y[j], dz = pz[k] - Z[j];
     const bool paired = inside & (dx * dx + dy * dy + dz * dz <= gate.max_sq) &
                         (nx[k] * NX[j] + ny[k] * NY[j] + nz[k] * NZ[j] >= gate.min_cos);
-    qx[k] = paired ? X[j] : px[k];
-    qy[k] = paired ? Y[j] : py[k];
-    qz[k] = paired ? Z[j] : pz[k];
+    qx[k] = paired ? X[j] : 0.0f;
+    qy[k] = paired ? Y[j] : 0.0f;
+    qz[k] = paired ? Z[j] : 0.0f;
     Nx[k] = paired ? NX[j] : 0.0f;
     Ny[k] = paired ? NY[j] : 0.0f;
     Nz[k] = paired ? NZ[j] : 0.0f;
-    work.paired(k) = paired ? 1.0f : 0.0f;
+    px[k] = paired ? px[k] : 0.0f;
+    py[k] = paired ? py[k] : 0.0f;
+    pz[k] = paired ? pz[k] : 0.0f;
+    pairs += paired;
   }
+  return pairs;
 }
 
 }  // namespace
@@ -73,8 +77,8 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
                                                const cv::Rect& box,
                                                const Eigen::Isometry3d& T_prev_curr,
                                                const PointToPlaneSettings& settings) {
-  const long points = curr.with_normal.rows();
-  const long blocks = (points + kPointsPerBlock - 1) / kPointsPerBlock;
+  const long pixels = curr.pixels.rows();
+  const long blocks = (pixels + kPixelsPerBlock - 1) / kPixelsPerBlock;
   std::vector<Moments> moments(static_cast<size_t>(blocks));
   std::vector<double> sum_p2(static_cast<size_t>(blocks));
   std::vector<int> counts(static_cast<size_t>(blocks));
@@ -96,9 +100,9 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
     BlockWork work;
 #pragma omp for schedule(static)
     for (long c = 0; c < blocks; ++c) {
-      const long begin = c * kPointsPerBlock;
-      const long size = std::min(kPointsPerBlock, points - begin);
-      const auto block = curr.with_normal.middleRows(begin, size);
+      const long begin = c * kPixelsPerBlock;
+      const long size = std::min(kPixelsPerBlock, pixels - begin);
+      const auto block = curr.pixels.middleRows(begin, size);
       // p' = R p + t and n' = R n, a column (coordinate) at a time.
       work.p.resize(size, 3);
       work.n.resize(size, 3);
@@ -109,7 +113,7 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
       }
       work.u = fx * work.p.col(0).array() / work.p.col(2).array() + cx;
       work.v = fy * work.p.col(1).array() / work.p.col(2).array() + cy;
-      associate(prev, gate, size, work);
+      counts[size_t(c)] = associate(prev, gate, size, work);
       // h = (N x p, N), m = (p - q).N, for the whole block at once.
       const auto px = work.p.col(0).array(), py = work.p.col(1).array(), pz = work.p.col(2).array();
       const auto Nx = work.N.col(0).array(), Ny = work.N.col(1).array(), Nz = work.N.col(2).array();
@@ -126,9 +130,7 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
       for (int i = 0; i < 7; ++i)
         for (int k = 0; k <= i; ++k)
           gram(i, k) = gram(k, i) = double(work.rows.col(i).dot(work.rows.col(k)));
-      sum_p2[size_t(c)] =
-          double(((px.square() + py.square() + pz.square()) * work.paired).sum());
-      counts[size_t(c)] = int(work.paired.sum());
+      sum_p2[size_t(c)] = double((px.square() + py.square() + pz.square()).sum());
     }
   }
   Moments total = Moments::Zero();

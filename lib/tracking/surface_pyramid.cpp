@@ -101,20 +101,6 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
       nz[u] = n_z / norm + none;
     }
   }
-  // The rows with a normal, column by column: every value is stored, the position advances
-  // only past those kept (no branch).
-  long count = 0;
-  for (long i = 0; i < s.pixels.rows(); ++i) count += !std::isnan(NZ[i]);
-  s.with_normal.resize(count, 6);
-#pragma omp parallel for schedule(static)
-  for (int c = 0; c < 6; ++c) {
-    const float* from = s.pixels.col(c).data();
-    float* to = s.with_normal.col(c).data();
-    for (long i = 0, k = 0; i < s.pixels.rows() && k < count; ++i) {
-      to[k] = from[i];
-      k += !std::isnan(NZ[i]);
-    }
-  }
   return s;
 }
 

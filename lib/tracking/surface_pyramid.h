@@ -12,19 +12,17 @@
 
 namespace slamkit {
 
-// One row per pixel or point: x y z of the point, then nx ny nz of its unit normal, in the
-// camera frame. A column per coordinate, so that whole columns go through SIMD.
+// One row per pixel: x y z of the point, then nx ny nz of its unit normal, in the camera
+// frame. A column per coordinate, so that whole columns go through SIMD.
 using SurfaceColumns = Eigen::Matrix<float, Eigen::Dynamic, 6>;
 
 struct Surface {
   Camera camera;  // the level's pinhole camera (camera_at_level)
   int width = 0, height = 0;
-  // Every pixel, row-major: what the previous surface is looked up in. A pixel without a
-  // normal (no valid depth, a depth edge, a neighbour missing) has NaN in its normal and
-  // takes no part; without a valid depth its point is NaN too.
+  // Every pixel, row-major. A pixel without a normal (no valid depth, a depth edge, a
+  // neighbour missing) has NaN in its normal and takes no part; without a valid depth its
+  // point is NaN too.
   SurfaceColumns pixels;
-  // The pixels that have a normal, in the same order: what the current surface is read as.
-  SurfaceColumns with_normal;
   int index(int u, int v) const { return v * width + u; }
   bool has_normal(int i) const { return !std::isnan(pixels(i, 5)); }
 };
