@@ -29,7 +29,7 @@ void run_synth(const SynthArgs& args) {
   spec.out = args.out;
   synth::check_spec(spec);  // before the scene's textures are built: bad arguments fail at once
 
-  const synth::SyntheticScene scene = synth::make_furnished_room();
+  const synth::SyntheticScene scene = synth::make_named_scene(synth::preset_scene(spec.preset));
   Progress progress("synth " + args.preset, size_t(spec.frames));
   synth::write_sequence(scene, spec, [&progress](size_t done) { progress.update(done); });
   const double seconds =
@@ -43,7 +43,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   auto args = std::make_shared<SynthArgs>();
   CLI::App* cmd = root.add_subcommand(
       "synth", "Render a synthetic RGB-D sequence (TUM layout, exact groundtruth)");
-  cmd->add_option("--preset", args->preset, "Camera motion: desk, loop, lowtexture or jerk")
+  cmd->add_option("--preset", args->preset, "Camera motion: desk, loop, lowtexture, jerk, long or lookalike")
       ->capture_default_str();
   cmd->add_option("--frames", args->frames, "Number of frames (30 Hz)")->capture_default_str();
   cmd->add_option("--out", args->out, "Output folder (created if missing)")->required();

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "eval/checksum.h"
+#include "io/path_kind.h"
 
 namespace slamkit::eval {
 
@@ -120,7 +121,7 @@ void merge_into_metrics_file(const std::filesystem::path& path, const json& upda
 }
 
 json read_metrics_file(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path))
+  if (path_kind(path) != PathKind::kFile)
     throw_input_error(path.string(), "no metrics file here (run `slamkit eval ... --out` first)");
   std::ifstream in(path);
   if (!in) throw_input_error(path.string(), "cannot read metrics file");

@@ -14,7 +14,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${1:-60}"
 (($# > 0)) && shift
-targets=(tum_list association trajectory settings calibration png suite)  # as tests/fuzz
+targets=(tum_list association trajectory settings calibration png suite sweep)  # as tests/fuzz
 (($# > 0)) && targets=("$@")
 
 "$root/scripts/setup.sh" --test-tools --packages-only
@@ -48,6 +48,7 @@ gather_seeds() {
     head -c 4096 "$file" >"$dir/$(echo "$file" | tr '/' '_')"
   done
   if [[ "$target" == suite ]]; then cp "$root"/results/*.yaml "$dir/"; fi
+  if [[ "$target" == sweep ]]; then cp "$root"/tests/sweep/*.yaml "$dir/"; fi
 }
 
 # TMPDIR: the targets write each input to a file; memory is faster than disk for that.

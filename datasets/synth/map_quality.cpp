@@ -109,7 +109,7 @@ void write_synthetic_info(const fs::path& folder, const SequenceSpec& spec) {
   YAML::Emitter out;
   out << YAML::Comment("slamkit synthetic sequence: the recipe that rebuilds its scene");
   out << YAML::BeginMap;
-  out << YAML::Key << "scene" << YAML::Value << "furnished_room";
+  out << YAML::Key << "scene" << YAML::Value << preset_scene(spec.preset);
   out << YAML::Key << "preset" << YAML::Value << preset_name(spec.preset);
   out << YAML::Key << "frames" << YAML::Value << spec.frames;
   out << YAML::Key << "seed" << YAML::Value << spec.seed;
@@ -143,10 +143,11 @@ std::optional<SyntheticInfo> read_synthetic_info(const fs::path& folder) {
 }
 
 SyntheticScene make_scene(const SyntheticInfo& info) {
-  if (info.scene != "furnished_room")
-    throw InputError(std::string(kSyntheticInfoFile) + ": unknown scene '" + info.scene +
-                     "' (known: furnished_room)");
-  return make_furnished_room();
+  try {
+    return make_named_scene(info.scene);
+  } catch (const InputError& e) {
+    throw InputError(std::string(kSyntheticInfoFile) + ": " + e.what());
+  }
 }
 
 MapQuality evaluate_map_quality(const std::vector<Eigen::Vector3f>& map_points,

@@ -22,7 +22,7 @@ namespace slamkit::synth {
 inline constexpr const char* kSyntheticInfoFile = "synthetic.yaml";
 
 struct SyntheticInfo {
-  std::string scene = "furnished_room";  // every preset films make_furnished_room()
+  std::string scene = "furnished_room";  // preset_scene(preset), for make_named_scene
   Preset preset = Preset::kDesk;
   int frames = 0;
   uint64_t seed = 0;

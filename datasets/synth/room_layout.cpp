@@ -1,24 +1,17 @@
 #include "datasets/synth/room_layout.h"
 
+#include "core/error.h"
+#include "datasets/synth/layout_parts.h"
+#include "datasets/synth/multi_room_layouts.h"
+
 namespace slamkit::synth {
-namespace {
-
-Eigen::AlignedBox3d box(double x0, double x1, double y0, double y1, double z0, double z1) {
-  return {Eigen::Vector3d(x0, y0, z0), Eigen::Vector3d(x1, y1, z1)};
-}
-
-TextureStyle textured(cv::Scalar base, cv::Scalar accent, double tile_size_m = 0) {
-  return {base, accent, false, tile_size_m};
-}
-
-// Colours are BGR.
-const TextureStyle kWood = textured({70, 115, 165}, {35, 60, 100});
-const TextureStyle kMetal = textured({75, 75, 80}, {160, 160, 165});
-const TextureStyle kCardboard = textured({105, 150, 190}, {40, 70, 110});
-const TextureStyle kPlainWall = TextureStyle::plain_colour({188, 198, 204});
-const TextureStyle kPlainRug = TextureStyle::plain_colour({150, 160, 168});
-
-}  // namespace
+using layout::box;
+using layout::kCardboard;
+using layout::kMetal;
+using layout::kPlainRug;
+using layout::kPlainWall;
+using layout::kWood;
+using layout::textured;
 
 SceneDescription furnished_room_description() {
   SceneDescription d;
@@ -31,7 +24,8 @@ SceneDescription furnished_room_description() {
       textured({85, 118, 150}, {40, 65, 100}, 0.4),     // floor tiles
       textured({212, 212, 210}, {150, 150, 155}, 0.6),  // ceiling panels
   };
-  d.light_position = Eigen::Vector3d(0.3, -0.3, 2.45);
+  d.name = "furnished_room";
+  d.lights = {{Eigen::Vector3d(0.3, -0.3, 2.45)}};
 
   d.furniture.push_back(
       {"desk",
@@ -84,5 +78,12 @@ SceneDescription furnished_room_description() {
 }
 
 SyntheticScene make_furnished_room() { return SyntheticScene(furnished_room_description()); }
+
+SyntheticScene make_named_scene(const std::string& name) {
+  if (name == "furnished_room") return make_furnished_room();
+  if (name == "two_rooms") return SyntheticScene(two_rooms_description());
+  if (name == "twin_rooms") return SyntheticScene(twin_rooms_description());
+  throw InputError("unknown scene '" + name + "' (known: furnished_room, two_rooms, twin_rooms)");
+}
 
 }  // namespace slamkit::synth

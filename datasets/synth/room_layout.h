@@ -4,6 +4,7 @@
 // west wall (x = -2.5) with a pillar and a bench in front of it, all plain, for the
 // `lowtexture` preset.
 #include <Eigen/Core>
+#include <string>
 
 #include "datasets/synth/scene.h"
 
@@ -18,5 +19,9 @@ SceneDescription furnished_room_description();
 
 // The room with its textures generated (about a second; build it once and share it).
 SyntheticScene make_furnished_room();
+
+// A scene by its description's name: furnished_room, or two_rooms and twin_rooms
+// (multi_room_layouts.h). Throws InputError for another name.
+SyntheticScene make_named_scene(const std::string& name);
 
 }  // namespace slamkit::synth

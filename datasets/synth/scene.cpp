@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "datasets/synth/counter_rng.h"
 
@@ -49,31 +50,59 @@ SyntheticScene::FaceFrame face_frame(const Eigen::AlignedBox3d& box, int axis) {
   return {u, 2, box.min()[u], box.max().z(), -1.0, size[u], size.z()};
 }
 
+// A twin repeats its original's textures part by part: the parts must match in size.
+void check_twin(const Furniture& piece, const std::vector<Furniture>& furniture) {
+  if (piece.texture_twin < 0) return;
+  const auto index = size_t(piece.texture_twin);
+  const bool earlier = index < furniture.size() && &furniture[index] < &piece;
+  const auto same_sizes = [&](const Furniture& original) {
+    if (original.parts.size() != piece.parts.size()) return false;
+    for (size_t k = 0; k < piece.parts.size(); ++k)
+      if (!original.parts[k].bounds.sizes().isApprox(piece.parts[k].bounds.sizes(), 1e-9))
+        return false;
+    return true;
+  };
+  if (!earlier || !same_sizes(furniture[index]) || furniture[index].texture_twin >= 0)
+    throw std::invalid_argument("scene: '" + piece.name +
+                                "' is no twin of an earlier original piece of its shape");
+}
+
 }  // namespace
 
 SyntheticScene::SyntheticScene(SceneDescription description)
     : description_(std::move(description)) {
+  if (description_.lights.empty()) throw std::invalid_argument("scene: no light");
   std::vector<TextureStyle> styles;
-  const auto add_faces = [&](const Eigen::AlignedBox3d& box, const auto& style_of_face) {
+  std::vector<int> texture_ids;  // a face's texture seed; a twin's face takes its original's
+  const auto add_faces = [&](const Eigen::AlignedBox3d& box, int first_texture_id,
+                             const auto& style_of_face) {
     for (int face = 0; face < 6; ++face) {
       face_frames_.push_back(face_frame(box, face / 2));
       styles.push_back(style_of_face(face));
+      texture_ids.push_back(first_texture_id + face);
     }
   };
-  add_faces(description_.room, [&](int face) { return description_.room_styles[face]; });
-  for (const Furniture& piece : description_.furniture)
-    for (const BoxPart& part : piece.parts) {
+  add_faces(description_.room, 0, [&](int face) { return description_.room_styles[face]; });
+  std::vector<int> first_face_of_piece;
+  for (const Furniture& piece : description_.furniture) {
+    check_twin(piece, description_.furniture);
+    first_face_of_piece.push_back(int(face_frames_.size()));
+    const int first_texture_id = piece.texture_twin < 0 ? int(face_frames_.size())
+                                                        : first_face_of_piece[piece.texture_twin];
+    for (size_t k = 0; k < piece.parts.size(); ++k) {
+      const BoxPart& part = piece.parts[k];
       all_parts_.push_back(int(boxes_.size()));
       boxes_.push_back({part.bounds.min(), part.bounds.max(), int(face_frames_.size())});
-      add_faces(part.bounds, [&](int) { return part.style; });
+      add_faces(part.bounds, first_texture_id + 6 * int(k), [&](int) { return part.style; });
     }
+  }
 
   std::vector<cv::Mat> images(face_frames_.size());
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < int(images.size()); ++i)
     images[i] = make_procedural_image(face_frames_[i].width_m, face_frames_[i].height_m,
                                       description_.texels_per_metre, styles[i],
-                                      mix64(description_.texture_seed) + uint64_t(i));
+                                      mix64(description_.texture_seed) + uint64_t(texture_ids[i]));
   for (const cv::Mat& image : images) textures_.emplace_back(image, description_.texels_per_metre);
 }
 
@@ -153,7 +182,10 @@ Eigen::Vector3f SyntheticScene::colour(const SurfaceHit& hit, double footprint_m
   const double v = f.v_sign * (hit.point[f.v_axis] - f.v0);
   const Eigen::Vector3f albedo = textures_[hit.surface].sample(u, v, footprint_m);
 
-  const Eigen::Vector3d to_light = description_.light_position - hit.point;
+  const std::vector<Light>& lights = description_.lights;
+  const auto lit = std::find_if(lights.begin(), lights.end(),
+                                [&](const Light& light) { return light.zone.contains(hit.point); });
+  const Eigen::Vector3d to_light = (lit == lights.end() ? lights[0] : *lit).position - hit.point;
   const double d2 = to_light.squaredNorm();
   const double lambert = std::max(0.0, hit.normal.dot(to_light) / std::sqrt(d2));
   return albedo * (kAmbient + kDiffuse * float(lambert / (1.0 + d2 / kFalloffSquared)));

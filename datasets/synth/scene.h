@@ -23,14 +23,25 @@ struct BoxPart {
 struct Furniture {
   std::string name;
   std::vector<BoxPart> parts;
+  // Index of an earlier piece with parts of the same sizes (a translated copy) whose
+  // textures this one repeats, so that the two look the same; -1: textures of its own.
+  int texture_twin = -1;
+};
+
+// A point light. There are no shadows, so a light would shine through a wall into the next
+// room: it lights only the surfaces inside its zone.
+struct Light {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::AlignedBox3d zone{Eigen::Vector3d::Constant(-1e9), Eigen::Vector3d::Constant(1e9)};
 };
 
 // Faces of a box are indexed 2 * axis + side (side 0 at the min corner): -x +x -y +y -z +z.
 struct SceneDescription {
+  std::string name;                         // as synthetic.yaml names it (room_layout.h)
   Eigen::AlignedBox3d room;                 // its inside is the free space
   std::array<TextureStyle, 6> room_styles;  // walls -x +x -y +y, floor (-z), ceiling (+z)
   std::vector<Furniture> furniture;
-  Eigen::Vector3d light_position = Eigen::Vector3d::Zero();  // one point light, no shadows
+  std::vector<Light> lights;  // a surface takes the first light whose zone holds it
   double texels_per_metre = 320;
   uint64_t texture_seed = 7;
 };
@@ -45,6 +56,8 @@ struct SurfaceHit {
 class SyntheticScene {
  public:
   // Generates every face's texture (OpenMP over faces; the result does not depend on it).
+  // Throws std::invalid_argument for a texture twin that is not an earlier piece of the
+  // same part sizes, or for no light.
   explicit SyntheticScene(SceneDescription description);
 
   // The first surface along origin + t * direction (t > 0); `direction` need not be a unit

@@ -6,11 +6,13 @@
 #include <cinttypes>
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/trajectory.h"
 #include "datasets/synth/map_quality.h"
 #include "datasets/synth/renderer.h"
+#include "datasets/synth/revisits.h"
 #include "io/camera_yaml.h"
 #include "io/png_file.h"
 #include "io/trajectory_io.h"
@@ -68,6 +70,19 @@ void write_lists(const SequenceSpec& spec) {
   close_written(assoc, assoc_path);
 }
 
+void write_revisits(const fs::path& path, const std::vector<Eigen::Isometry3d>& poses) {
+  const RevisitCriteria criteria;
+  std::ofstream out = open_for_writing(path);
+  out << "# true revisits (groundtruth): frame `later` is within " << criteria.max_distance_m
+      << " m and " << criteria.max_angle_deg << " deg of each of frames first..last, having been\n"
+      << "# more than " << criteria.min_excursion_m << " m from it in between\n"
+      << "# later first last later_stamp first_stamp last_stamp\n";
+  for (const RevisitRange& r : true_revisits(poses, criteria))
+    out << r.later << ' ' << r.first << ' ' << r.last << ' ' << frame_stamp_text(r.later) << ' '
+        << frame_stamp_text(r.first) << ' ' << frame_stamp_text(r.last) << '\n';
+  close_written(out, path);
+}
+
 }  // namespace
 
 Camera synthetic_camera() {
@@ -104,6 +119,9 @@ void check_spec(const SequenceSpec& spec) {
 void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
                     const std::function<void(size_t)>& on_progress) {
   check_spec(spec);
+  if (scene.description().name != preset_scene(spec.preset))
+    throw std::invalid_argument("write_sequence: preset " + preset_name(spec.preset) + " films " +
+                                preset_scene(spec.preset) + ", not " + scene.description().name);
   const std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
   create_folder(spec.out / "rgb");
   create_folder(spec.out / "depth");
@@ -137,6 +155,7 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
   for (int i = 0; i < spec.frames; ++i) groundtruth.push_back(frame_stamp(i), poses[i]);
   write_tum_trajectory(spec.out / "groundtruth.txt", groundtruth,
                        "ground truth trajectory (exact, T_w_c)\n# file: '" + describe(spec) + "'");
+  write_revisits(spec.out / "revisits.txt", poses);
   write_camera_yaml(spec.out / "calibration.yaml", camera);
   write_synthetic_info(spec.out, spec);  // lets tools (map-eval) rebuild the scene
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Renders a preset into a folder in the TUM RGB-D layout: rgb/<stamp>.png, depth/<stamp>.png,
-// rgb.txt, depth.txt, associate.txt, groundtruth.txt (the exact poses), calibration.yaml and
-// synthetic.yaml (the preset and seed, so that tools can rebuild the scene).
+// rgb.txt, depth.txt, associate.txt, groundtruth.txt (the exact poses), revisits.txt (which
+// frames truly revisit a place, revisits.h), calibration.yaml and synthetic.yaml (the preset
+// and seed, so that tools can rebuild the scene).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -36,8 +37,9 @@ double frame_stamp(int i);
 void check_spec(const SequenceSpec& spec);
 
 // Writes the whole sequence (frames rendered in parallel, identical for any thread count).
-// on_progress(frames_done) is called on the calling thread. Throws InputError when the spec
-// is invalid or a file cannot be written.
+// on_progress(frames_done) is called on the calling thread. `scene` must be the one the
+// preset films (preset_scene; std::invalid_argument otherwise). Throws InputError when the
+// spec is invalid or a file cannot be written.
 void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
                     const std::function<void(size_t)>& on_progress = nullptr);
 

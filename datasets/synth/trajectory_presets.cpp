@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "datasets/synth/hand_shake.h"
+#include "datasets/synth/multi_room_layouts.h"
 #include "datasets/synth/room_layout.h"
 
 namespace slamkit::synth {
@@ -44,33 +45,28 @@ View desk_view(double t) {
                                          0.05 + 0.1 * wave(t, 4.3))};
 }
 
-// An ellipse around the desk, looking inwards; periodic in `phase` (0..1).
+// Around the desk on an ellipse, looking outwards at the walls with the yaw swinging 20 deg
+// either side three times a lap, periodic in `phase` (0..1): each wall is seen only once a
+// lap, the plain west one on depth alone, so tracking drifts and only the return to the start
+// can correct it. At 150 frames it turns at up to 150 deg/s.
 View loop_view(double phase) {
   const double a = 2 * M_PI * phase;
-  const Vector3d eye(1.85 * std::cos(a), 1.35 * std::sin(a), 1.5 + 0.1 * std::sin(2 * a));
-  return {eye, kDeskTopCentre + Vector3d(0.25 * std::sin(2 * a), 0.2 * std::sin(3 * a), 0.1)};
+  const Vector3d eye(1.0 * std::cos(a), 0.75 * std::sin(a), 1.4 + 0.08 * std::sin(2 * a));
+  const double yaw = a + 20 * kDeg * std::sin(3 * a), pitch = -15 * kDeg;
+  return {eye, eye + Vector3d(std::cos(yaw), std::sin(yaw), std::tan(pitch))};
 }
 
-// Keyframes (phase, eye, target), eased between (position lerped, orientation slerped, so
-// turns are even): desk, then close to the plain corner for 40% of the sequence drifting
-// slowly (so tracking has motion to follow on depth alone), then the sideboard.
-Eigen::Isometry3d low_texture_pose(double phase) {
-  struct Key {
-    double phase;
-    Vector3d eye, target;
-  };
-  static const Key kKeys[] = {
-      {0.00, {-0.2, -1.4, 1.45}, {0.2, 0.1, 0.75}},
-      {0.20, {-0.8, -1.0, 1.35}, {-0.3, 0.2, 0.8}},
-      {0.32, {-1.35, 0.65, 1.15}, kPlainCorner + Vector3d(0, 0.15, 0.2)},
-      {0.52, {-1.45, 0.45, 1.1}, kPlainCorner + Vector3d(0, 0.05, 0.15)},
-      {0.72, {-1.4, 0.7, 1.2}, kPlainCorner + Vector3d(0, 0.2, 0.25)},
-      {0.84, {-0.9, 0.9, 1.4}, {0.3, 1.8, 0.9}},
-      {1.00, {-0.3, 0.8, 1.45}, {0.8, 1.9, 1.0}},
-  };
-  const Key* next = std::upper_bound(std::begin(kKeys), std::end(kKeys), phase,
-                                     [](double p, const Key& k) { return p < k.phase; });
-  if (next == std::end(kKeys)) --next;
+// A scripted path: keys (phase, eye, target) eased between (position lerped, orientation
+// slerped, so turns are even; the camera slows to a stop at each key).
+struct Key {
+  double phase;
+  Vector3d eye, target;
+};
+
+Eigen::Isometry3d keyed_pose(const std::vector<Key>& keys, double phase) {
+  auto next = std::upper_bound(keys.begin(), keys.end(), phase,
+                               [](double p, const Key& k) { return p < k.phase; });
+  if (next == keys.end()) --next;
   const Key& prev = *(next - 1);
   const double w = smootherstep((phase - prev.phase) / (next->phase - prev.phase));
   const Eigen::Quaterniond q0(look_at(prev.eye, prev.target).linear());
@@ -79,6 +75,66 @@ Eigen::Isometry3d low_texture_pose(double phase) {
   T_w_c.linear() = q0.slerp(w, q1).toRotationMatrix();
   T_w_c.translation() = (1 - w) * prev.eye + w * next->eye;
   return T_w_c;
+}
+
+// Desk, then close to the plain corner for 40% of the sequence drifting slowly (so tracking
+// has motion to follow on depth alone), then the sideboard.
+Eigen::Isometry3d low_texture_pose(double phase) {
+  static const std::vector<Key> kKeys = {
+      {0.00, {-0.2, -1.4, 1.45}, {0.2, 0.1, 0.75}},
+      {0.20, {-0.8, -1.0, 1.35}, {-0.3, 0.2, 0.8}},
+      {0.32, {-1.35, 0.65, 1.15}, kPlainCorner + Vector3d(0, 0.15, 0.2)},
+      {0.52, {-1.45, 0.45, 1.1}, kPlainCorner + Vector3d(0, 0.05, 0.15)},
+      {0.72, {-1.4, 0.7, 1.2}, kPlainCorner + Vector3d(0, 0.2, 0.25)},
+      {0.84, {-0.9, 0.9, 1.4}, {0.3, 1.8, 0.9}},
+      {1.00, {-0.3, 0.8, 1.45}, {0.8, 1.9, 1.0}},
+  };
+  return keyed_pose(kKeys, phase);
+}
+
+// Through both rooms of two_rooms and back: round the first room looking at its walls, through
+// the doorway, round the second room, back through the doorway and to the first pose.
+Eigen::Isometry3d long_pose(double phase) {
+  const Vector3d door(kDoorwayX, kDoorwayY, 1.45);
+  const std::vector<Key> keys = {
+      {0.00, {-0.3, -1.4, 1.45}, kDeskTopCentre},
+      {0.07, {-1.3, -1.0, 1.4}, {-1.8, 0.9, 0.9}},
+      {0.14, {-1.3, 0.9, 1.4}, {0.0, 1.9, 0.9}},
+      {0.21, {0.4, 1.0, 1.45}, {2.5, 1.0, 1.4}},
+      {0.28, door - Vector3d(1.15, 0, 0), door + Vector3d(1.5, 0, -0.45)},
+      {0.35, door + Vector3d(1.05, 0, 0), kSecondRoomCentre + Vector3d(0, 0, 0.75)},
+      {0.42, {4.0, -1.3, 1.45}, {5.5, -2.0, 1.3}},
+      {0.49, {6.2, -1.0, 1.45}, {7.6, 0.0, 1.1}},
+      {0.56, {6.4, 0.9, 1.45}, {5.0, 2.0, 0.7}},
+      {0.63, {4.2, 1.0, 1.5}, {3.0, -0.5, 1.0}},
+      {0.70, door + Vector3d(1.05, 0, 0), door - Vector3d(1.5, 0, 0.25)},
+      {0.79, door - Vector3d(1.15, 0, 0), {-1.0, -1.2, 1.0}},
+      {0.89, {0.8, -1.45, 1.45}, kDeskTopCentre + Vector3d(0.3, 0, 0)},
+      {1.00, {-0.3, -1.4, 1.45}, kDeskTopCentre},
+  };
+  return keyed_pose(keys, phase);
+}
+
+// In twin_rooms: a look at the west room's desk, through the doorway to the same look at the
+// east room's (the look-alike), and back to the first (a true revisit).
+Eigen::Isometry3d lookalike_pose(double phase) {
+  const Vector3d west = kFirstTwinCentre, east = kFirstTwinCentre + kTwinOffset;
+  const Vector3d desk = kDeskTopCentre, door(0, kTwinDoorwayY, 1.45);
+  const Vector3d look_eye(-0.2, -1.3, 1.45), aside_eye(0.3, -1.2, 1.4);
+  const Vector3d aside_target(0.2, 0.3, 0.8);
+  const std::vector<Key> keys = {
+      {0.00, west + look_eye, west + desk},
+      {0.10, west + aside_eye, west + aside_target},
+      {0.22, door - Vector3d(1.2, 0, 0), door + Vector3d(1.5, 0, -0.35)},
+      {0.34, door + Vector3d(1.2, 0, 0), east + Vector3d(0.95, -1.0, 1.0)},
+      {0.46, east + aside_eye, east + aside_target},
+      {0.56, east + look_eye, east + desk},
+      {0.68, door + Vector3d(1.2, 0, 0), door - Vector3d(1.5, 0, 0.35)},
+      {0.80, door - Vector3d(1.2, 0, 0), west + Vector3d(0.55, -1.0, 0.9)},
+      {0.90, west + aside_eye, west + aside_target},
+      {1.00, west + look_eye, west + desk},
+  };
+  return keyed_pose(keys, phase);
 }
 
 // Slow panning across the desk towards the north wall; the whip turns 40 deg right and moves
@@ -111,6 +167,10 @@ Eigen::Isometry3d scripted_pose(Preset preset, int i, int frames) {
       return pose_of(loop_view(loop_phase(i, frames)));
     case Preset::kLowTexture:
       return low_texture_pose(double(i) / (frames - 1));
+    case Preset::kLong:
+      return long_pose(double(i) / (frames - 1));
+    case Preset::kLookalike:
+      return lookalike_pose(double(i) / (frames - 1));
     case Preset::kJerk:
       return pose_of(jerk_view(t, whip_weight(i, frames)));
   }
@@ -120,7 +180,8 @@ Eigen::Isometry3d scripted_pose(Preset preset, int i, int frames) {
 }  // namespace
 
 const std::vector<std::string>& preset_names() {
-  static const std::vector<std::string> kNames = {"desk", "loop", "lowtexture", "jerk"};
+  static const std::vector<std::string> kNames = {"desk",       "loop", "lowtexture",
+                                                  "jerk",       "long", "lookalike"};
   return kNames;
 }
 
@@ -131,11 +192,22 @@ Preset parse_preset(const std::string& name) {
   const auto it = std::find(names.begin(), names.end(), name);
   if (it == names.end())
     throw InputError("--preset: unknown preset '" + name +
-                     "' (choose desk, loop, lowtexture or jerk)");
+                     "' (choose desk, loop, lowtexture, jerk, long or lookalike)");
   return Preset(it - names.begin());
 }
 
 int jerk_whip_frame(int frames) { return frames / 2 - 1; }
+
+std::string preset_scene(Preset preset) {
+  switch (preset) {
+    case Preset::kLong:
+      return "two_rooms";
+    case Preset::kLookalike:
+      return "twin_rooms";
+    default:
+      return "furnished_room";
+  }
+}
 
 Eigen::Isometry3d look_at(const Vector3d& eye, const Vector3d& target) {
   const Vector3d z = (target - eye).normalized();

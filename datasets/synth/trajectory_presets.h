@@ -1,5 +1,6 @@
 #pragma once
-// Camera paths through the furnished room (room_layout.h), one per test scenario. Poses are
+// Camera paths through the synthetic scenes (room_layout.h, multi_room_layouts.h), one per
+// test scenario. Poses are
 // T_w_c with the camera looking along +z, x right, y down (TUM / OpenCV); world z is up.
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -10,21 +11,28 @@ namespace slamkit::synth {
 
 enum class Preset {
   kDesk,        // hand-held sweeps around the desk, like TUM fr1/desk
-  kLoop,        // once around the desk, ending exactly on the first pose
+  kLoop,        // once around the desk looking out at the walls, ending exactly on the first pose
   kLowTexture,  // textured views, several seconds facing the plain wall up close, textured
   kJerk,        // smooth panning with one two-frame whip (about 20 deg and 15 cm per frame)
+  kLong,        // through two rooms and back to the start (two_rooms; 2,000 frames or more)
+  kLookalike,   // a place, its look-alike twin 5.1 m away, then the place again (twin_rooms)
 };
 
 constexpr double kFrameRate = 30.0;
 
-const std::vector<std::string>& preset_names();  // "desk", "loop", "lowtexture", "jerk"
+// "desk", "loop", "lowtexture", "jerk", "long", "lookalike"
+const std::vector<std::string>& preset_names();
 std::string preset_name(Preset preset);
 // Throws InputError listing the valid names.
 Preset parse_preset(const std::string& name);
 
+// The scene a preset films, by name (make_named_scene): furnished_room, two_rooms or
+// twin_rooms.
+std::string preset_scene(Preset preset);
+
 // Poses of frames 0..frames-1 at kFrameRate. `desk` and `jerk` move at fixed speeds (so a
-// longer sequence covers more of the same motion); `loop` and `lowtexture` stretch their
-// script over the frames. The seed drives the hand shake. Throws InputError if frames < 2.
+// longer sequence covers more of the same motion); the others stretch their script over the
+// frames. The seed drives the hand shake. Throws InputError if frames < 2.
 std::vector<Eigen::Isometry3d> make_trajectory(Preset preset, int frames, uint64_t seed);
 
 // Camera at `eye` looking at `target`, its image upright in a z-up world.

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "eval/regression/metrics.h"
 #include "eval/regression/yaml_checks.h"
+#include "io/path_kind.h"
 #include "io/settings_yaml.h"
 #include "io/tum_sequence.h"
 #include "io/yaml_file.h"
@@ -92,7 +93,7 @@ class SuiteReader : YamlChecks {
                            "' needs the data folder: set SLAMKIT_DATA or pass --data");
         path = *context_.data_dir / path;
       }
-      if (!fs::is_directory(path))
+      if (path_kind(path) != PathKind::kFolder)
         fail(folder, "sequence folder '" + path.string() + "' not found");
       s.folder = path;
     } else if (const YAML::Node tum = node["tum"]) {
@@ -105,7 +106,7 @@ class SuiteReader : YamlChecks {
       if (!context_.data_dir)
         fail(tum, "TUM sequences are kept in the data folder: set SLAMKIT_DATA or pass --data");
       s.folder = *context_.data_dir / ("rgbd_dataset_" + s.tum_name);
-      if (!context_.download && !fs::exists(s.folder / "groundtruth.txt"))
+      if (!context_.download && path_kind(s.folder / "groundtruth.txt") == PathKind::kMissing)
         fail(tum, "'" + s.folder.string() + "' not found (downloads are off)");
     } else {
       const YAML::Node synth = node["synthetic"];
@@ -130,7 +131,7 @@ class SuiteReader : YamlChecks {
     }
     if (const YAML::Node calibration = node["calibration"]) {
       s.calibration = relative_to_suite(scalar(calibration, "calibration"));
-      if (!fs::is_regular_file(s.calibration))
+      if (path_kind(s.calibration) != PathKind::kFile)
         fail(calibration, "calibration file '" + s.calibration.string() + "' not found");
     }
     if (s.kind == SequenceSource::Kind::kFolder) {
@@ -150,7 +151,7 @@ class SuiteReader : YamlChecks {
   bool apply_settings(const YAML::Node& node, Settings& settings) {
     if (node.IsScalar()) {
       const fs::path file = relative_to_suite(node.Scalar());
-      if (!fs::is_regular_file(file)) fail(node, "settings file '" + file.string() + "' not found");
+      if (path_kind(file) != PathKind::kFile) fail(node, "settings file '" + file.string() + "' not found");
       read_settings_yaml(file, settings);
       return true;
     }

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "eval/checksum.h"
 #include "io/atomic_file.h"
+#include "io/path_kind.h"
 
 namespace slamkit::sweep {
 namespace {
@@ -116,7 +117,7 @@ Plan load_plan(const fs::path& dir, regress::SuiteContext context) {
   }
   if (sweep_file.empty() || hash.empty() || columns_line == 0)
     throw_input_error(file.string(), "not a sweep plan: the header is incomplete");
-  if (!fs::exists(sweep_file))
+  if (path_kind(sweep_file) == PathKind::kMissing)
     throw_input_error(file.string(), 1, "the sweep file '" + sweep_file.string() + "' is gone");
   if (eval::fnv1a64_file(sweep_file) != hash)
     throw_input_error(file.string(), 2,

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "eval/regression/metrics.h"
 #include "eval/regression/yaml_checks.h"
+#include "io/path_kind.h"
 #include "io/settings_yaml.h"
 #include "io/yaml_file.h"
 
@@ -69,7 +70,7 @@ class SweepReader : regress::YamlChecks {
     if (node.IsScalar()) {
       fs::path suite = scalar(node, "suite");
       if (suite.is_relative()) suite = file_.parent_path() / suite;
-      if (!fs::is_regular_file(suite)) fail(node, "suite file '" + suite.string() + "' not found");
+      if (path_kind(suite) != PathKind::kFile) fail(node, "suite file '" + suite.string() + "' not found");
       return regress::load_suite(suite, context_);
     }
     if (!node.IsMap()) fail(node, "suite must be a suite file or a map with 'entries'");

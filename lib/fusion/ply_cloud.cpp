@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "io/path_kind.h"
 
 namespace fs = std::filesystem;
 
@@ -60,7 +61,7 @@ void write_ply_cloud(const fs::path& path, const PlyCloud& cloud, bool binary) {
 
 PlyCloud read_ply_cloud(const fs::path& path) {
   const std::string name = path.string();
-  if (!fs::is_regular_file(path)) throw_input_error(name, "PLY file not found");
+  if (path_kind(path) != PathKind::kFile) throw_input_error(name, "PLY file not found");
   pcl::PointCloud<pcl::PointXYZRGB> in;
   int status = -1;
   // PCL prints its own parse errors and warnings (a map without colour); ours is the one line.

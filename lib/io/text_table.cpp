@@ -4,13 +4,14 @@
 
 #include "core/error.h"
 #include "io/line_reader.h"
+#include "io/path_kind.h"
 
 namespace slamkit {
 
 std::vector<TableRow> read_table(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) throw_input_error(path.string(), "file not found");
-  if (std::filesystem::is_directory(path))
-    throw_input_error(path.string(), "is a folder, expected a file");
+  const PathKind kind = path_kind(path);
+  if (kind == PathKind::kMissing) throw_input_error(path.string(), "file not found");
+  if (kind == PathKind::kFolder) throw_input_error(path.string(), "is a folder, expected a file");
   LineReader reader(path, path.string());
   std::vector<TableRow> rows;
   std::string_view line;

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/line_reader.h"
+#include "io/path_kind.h"
 
 namespace slamkit {
 namespace {
@@ -125,8 +126,9 @@ void drop_duplicates(Parsed& p, DuplicateStamps rule, const std::string& name,
 TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
                                    const TrajectoryReadOptions& options) {
   const std::string name = printable(path.string(), 4096);
-  if (!std::filesystem::exists(path)) throw_input_error(name, "file not found");
-  if (std::filesystem::is_directory(path)) throw_input_error(name, "is a folder, expected a file");
+  const PathKind kind = path_kind(path);
+  if (kind == PathKind::kMissing) throw_input_error(name, "file not found");
+  if (kind == PathKind::kFolder) throw_input_error(name, "is a folder, expected a file");
   LineReader reader(path, name);
 
   TrajectoryFile result;

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "io/camera_yaml.h"
 #include "io/png_file.h"
+#include "io/path_kind.h"
 #include "io/text_table.h"
 #include "io/trajectory_io.h"
 
@@ -78,7 +79,7 @@ Camera choose_camera(const fs::path& folder, const SequenceOptions& options) {
   const fs::path folder_calibration = folder / "calibration.yaml";
   if (options.calibration_file) {
     camera = read_camera_yaml(*options.calibration_file);
-  } else if (fs::exists(folder_calibration)) {
+  } else if (path_kind(folder_calibration) != PathKind::kMissing) {
     camera = read_camera_yaml(folder_calibration);
   } else if (auto preset = Camera::preset_for_sequence(folder)) {
     camera = *preset;
@@ -99,7 +100,7 @@ std::string describe_type(const cv::Mat& m) {
 
 cv::Mat read_listed_png(const fs::path& folder, const fs::path& list, const StampedFile& f) {
   const fs::path path = folder / f.file;
-  if (!fs::exists(path))
+  if (path_kind(path) == PathKind::kMissing)
     throw_input_error(list.string(), f.line, "listed image does not exist: " + path.string());
   return read_png(path);
 }
@@ -120,8 +121,9 @@ std::vector<StampedFile> read_file_list(const fs::path& path) {
 }
 
 TumSequence TumSequence::open(const fs::path& folder, const SequenceOptions& options) {
-  if (!fs::exists(folder)) throw_input_error(folder.string(), "sequence folder not found");
-  if (!fs::is_directory(folder)) throw_input_error(folder.string(), "not a folder");
+  const PathKind kind = path_kind(folder);
+  if (kind == PathKind::kMissing) throw_input_error(folder.string(), "sequence folder not found");
+  if (kind != PathKind::kFolder) throw_input_error(folder.string(), "not a folder");
   TumSequence seq;
   seq.folder_ = folder;
   seq.camera_ = choose_camera(folder, options);
@@ -129,7 +131,7 @@ TumSequence TumSequence::open(const fs::path& folder, const SequenceOptions& opt
                                          : associate_lists(folder, options);
 
   const fs::path gt_path = folder / "groundtruth.txt";
-  if (fs::exists(gt_path)) {
+  if (path_kind(gt_path) != PathKind::kMissing) {
     TrajectoryFile gt = read_tum_trajectory(gt_path);
     size_t covered = 0;
     for (const FrameFiles& f : seq.frames_)

@@ -2,13 +2,15 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/path_kind.h"
 
 namespace slamkit {
 
 YAML::Node load_yaml_file(const std::filesystem::path& path, const std::string& what) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw_input_error(name, what + " not found");
-  if (std::filesystem::is_directory(path)) throw_input_error(name, "is a folder, expected a file");
+  const PathKind kind = path_kind(path);
+  if (kind == PathKind::kMissing) throw_input_error(name, what + " not found");
+  if (kind == PathKind::kFolder) throw_input_error(name, "is a folder, expected a file");
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);
   if (!error && size > kMaxYamlBytes)

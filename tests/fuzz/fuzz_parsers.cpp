@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/settings/settings.h"
 #include "eval/regression/suite.h"
+#include "eval/sweep/sweep_file.h"
 #include "io/camera_yaml.h"
 #include "io/png_file.h"
 #include "io/settings_yaml.h"
@@ -61,15 +62,23 @@ void parse_calibration(const fs::path& input, const fs::path&) { read_camera_yam
 
 void parse_png(const fs::path& input, const fs::path&) { read_png(input); }
 
-// What `slamkit regress` passes, with the preset and TUM names fixed here (the synthetic
-// generator and the download script are not needed to parse) and downloads off.
-void parse_suite(const fs::path& input, const fs::path& scratch) {
+// What `slamkit regress` and `slamkit sweep` pass, with the preset and TUM names fixed here (the
+// synthetic generator and the download script are not needed to parse) and downloads off.
+regress::SuiteContext suite_context(const fs::path& scratch) {
   regress::SuiteContext context;
   context.data_dir = scratch;
   context.presets = {"desk", "loop", "lowtexture", "jerk"};
   context.tum_names = [] { return std::vector<std::string>{"freiburg1_desk", "freiburg2_desk"}; };
   context.download = false;
-  regress::load_suite(input, context);
+  return context;
+}
+
+void parse_suite(const fs::path& input, const fs::path& scratch) {
+  regress::load_suite(input, suite_context(scratch));
+}
+
+void parse_sweep(const fs::path& input, const fs::path& scratch) {
+  sweep::load_sweep(input, suite_context(scratch));
 }
 
 fs::path process_scratch() {
@@ -91,7 +100,7 @@ const std::vector<FuzzTarget>& fuzz_targets() {
       {"settings", parse_settings},
       {"calibration", parse_calibration},
       {"png", parse_png},
-      {"suite", parse_suite},
+      {"suite", parse_suite},             {"sweep", parse_sweep},
   };
   return targets;
 }

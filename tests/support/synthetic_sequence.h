@@ -32,7 +32,7 @@ inline std::filesystem::path synthetic_sequence(synth::Preset preset, int frames
     spec.preset = preset;
     spec.frames = frames;
     spec.out = dir;
-    synth::write_sequence(synth::make_furnished_room(), spec);
+    synth::write_sequence(synth::make_named_scene(synth::preset_scene(preset)), spec);
     rendered.dirs.insert(dir);
   }
   return dir;

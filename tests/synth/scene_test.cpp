@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synth/counter_rng.h"
+#include "datasets/synth/multi_room_layouts.h"
 #include "datasets/synth/room_layout.h"
 #include "synth/shared_room.h"
 
@@ -91,6 +92,47 @@ TEST(SyntheticScene, PlainSurfacesAreUniformTexturedOnesAreNot) {
   // Along the plain west wall (lighting varies only slowly) and the textured south wall.
   EXPECT_LT(spread(Vector3d(-1.5, -1.0, 1.5), Vector3d(-1, 0, 0), Vector3d(0, 1, 0)), 6.0);
   EXPECT_GT(spread(Vector3d(0.0, -1.0, 1.5), Vector3d(0, -1, 0), Vector3d(1, 0, 0)), 40.0);
+}
+
+TEST(SyntheticScene, TwinPiecesAndTheirLightsRepeatTheSameColours) {
+  const SyntheticScene& scene = test::shared_scene(Preset::kLookalike);
+  CounterRng rng(8, 0, 0);
+  for (int i = 0; i < 200; ++i) {
+    // Rays from the west room's middle, and the same rays one twin offset east, towards the
+    // rooms' own walls and floor (not the end walls, the doorway or the shared ceiling).
+    const Vector3d origin = kFirstTwinCentre + Vector3d(rng.uniform(-1, 1), -1.2, 1.4);
+    const double north_or_south = rng.uniform(0, 1) < 0.5 ? -1 : 1;
+    const Vector3d direction(rng.uniform(-0.2, 0.2), north_or_south * rng.uniform(0.5, 1),
+                             rng.uniform(-1, 0.1));
+    const auto west = scene.cast_ray(origin, direction);
+    const auto east = scene.cast_ray(origin + kTwinOffset, direction);
+    ASSERT_TRUE(west && east);
+    EXPECT_NEAR(west->t, east->t, 1e-9);
+    EXPECT_NE(west->surface, east->surface);
+    EXPECT_LT((scene.colour(*west, 0.003) - scene.colour(*east, 0.003)).norm(), 1e-3);
+  }
+}
+
+TEST(SyntheticScene, RaysPassTheDoorwayIntoTheSecondRoom) {
+  const SyntheticScene& scene = test::shared_scene(Preset::kLong);
+  // Level through the doorway at head height: the bookcase at x = 7.2.
+  auto hit = scene.cast_ray(Vector3d(1.0, kDoorwayY, 1.5), Vector3d(1, 0, 0));
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->point.x(), 7.2, 1e-12);
+  // Beside the doorway: the partition wall.
+  hit = scene.cast_ray(Vector3d(1.0, 1.0, 1.5), Vector3d(1, 0, 0));
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->point.x(), 2.5, 1e-12);
+}
+
+TEST(SyntheticScene, ATwinMustRepeatAnEarlierPieceOfItsShape) {
+  SceneDescription d = furnished_room_description();
+  Furniture copy = d.furniture[0];
+  copy.texture_twin = 1;  // the cabinet: other parts
+  d.furniture.push_back(copy);
+  EXPECT_THROW(SyntheticScene{d}, std::invalid_argument);
+  d.furniture.back().texture_twin = int(d.furniture.size()) - 1;  // itself
+  EXPECT_THROW(SyntheticScene{d}, std::invalid_argument);
 }
 
 }  // namespace

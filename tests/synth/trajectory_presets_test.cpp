@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "core/pose.h"
+#include "datasets/synth/multi_room_layouts.h"
+#include "synth/shared_room.h"
 
 namespace slamkit::synth {
 namespace {
@@ -41,8 +43,9 @@ TEST(TrajectoryPresets, LoopEndsExactlyOnItsStartPose) {
   for (int frames : {20, 600}) {
     const auto poses = make_trajectory(Preset::kLoop, frames, 1);
     EXPECT_TRUE(poses.back().isApprox(poses.front(), 0.0)) << frames;
-    // ...after going somewhere: halfway it is across the room.
-    EXPECT_GT((poses[frames / 2].translation() - poses[0].translation()).norm(), 2.5);
+    // ...after going somewhere: halfway it is across the desk, facing the other way.
+    EXPECT_GT((poses[frames / 2].translation() - poses[0].translation()).norm(), 1.9);
+    EXPECT_GT(rotation_angle(poses[0].inverse() * poses[frames / 2]), 120 * M_PI / 180);
   }
 }
 
@@ -88,6 +91,45 @@ TEST(TrajectoryPresets, SameSeedSamePathOtherSeedOtherShake) {
     EXPECT_GT(shift, 1e-5) << name;
     EXPECT_LT(shift, 0.03) << name;
   }
+}
+
+TEST(TrajectoryPresets, EveryPresetKeepsTheCameraInFreeSpaceAtHandHeldSpeeds) {
+  for (const std::string& name : preset_names()) {
+    const Preset preset = parse_preset(name);
+    const int frames = preset == Preset::kLong ? 2000 : 600;
+    const auto poses = make_trajectory(preset, frames, 1);
+    const SyntheticScene& scene = test::shared_scene(preset);
+    double clearance = 1e9;
+    for (const auto& T_w_c : poses)
+      clearance = std::min(clearance, scene.signed_distance(T_w_c.translation()));
+    EXPECT_GT(clearance, 0.15) << name << ": the camera comes this close to a surface";
+    if (preset == Preset::kJerk) continue;  // its whip is the point
+    for (const Step& step : steps(poses)) {
+      ASSERT_LT(step.translation * kFrameRate, 2.0) << name << " m/s";
+      ASSERT_LT(step.rotation_deg * kFrameRate, 150) << name << " deg/s";
+    }
+  }
+}
+
+TEST(TrajectoryPresets, LoopAt150FramesStaysWithinTheTrackersFailureLimits) {
+  // The tracker's failure check: 3 m/s and 200 deg/s (loop tests run 150 and 200 frames).
+  for (const Step& step : steps(make_trajectory(Preset::kLoop, 150, 1))) {
+    ASSERT_LT(step.translation * kFrameRate, 2.0);
+    ASSERT_LT(step.rotation_deg * kFrameRate, 160);
+  }
+}
+
+TEST(TrajectoryPresets, LongGoesThroughBothRoomsAndBackToItsStart) {
+  const auto poses = make_trajectory(Preset::kLong, 2000, 1);
+  double west = 1e9, east = -1e9;
+  for (const auto& T_w_c : poses) {
+    west = std::min(west, T_w_c.translation().x());
+    east = std::max(east, T_w_c.translation().x());
+  }
+  EXPECT_LT(west, kDoorwayX - 3.5);  // deep in the first room...
+  EXPECT_GT(east, kDoorwayX + 3.0);  // ...and in the second
+  EXPECT_LT((poses.back().translation() - poses.front().translation()).norm(), 0.5);
+  EXPECT_LT(rotation_angle(poses.front().inverse() * poses.back()), 5 * M_PI / 180);
 }
 
 TEST(TrajectoryPresets, BadArgumentsAreInputErrors) {
