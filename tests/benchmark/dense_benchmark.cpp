@@ -3,8 +3,8 @@
 // previous frame's (built one frame earlier). Over the plain-corner stretch of a synthetic
 // `lowtexture` sequence (32% to 72% of its frames), the guess is the previous groundtruth
 // motion (a constant-velocity model). Prints milliseconds per frame, wall and process CPU
-// (CPU is what a shared machine does not inflate), at 1 and 2 threads, and the error of the
-// relative motion against groundtruth.
+// (CPU is what a shared machine does not inflate; with 2 threads it includes OpenMP's spin
+// waits), at 1 and 2 threads, and the error of the relative motion against groundtruth.
 //   build/tests/benchmark/slamkit_dense_benchmark [SEQUENCE]   (default: renders lowtexture 600)
 #include <omp.h>
 
@@ -64,8 +64,7 @@ void report(const TumSequence& seq, int threads) {
   const size_t first = size_t(0.32 * double(seq.size())), last = size_t(0.72 * double(seq.size()));
   std::vector<double> wall, cpu, err_mm;
   int iterations = 0;
-  SurfacePyramid prev =
-      make_surface_pyramid(seq.load(first).depth, seq.camera(), settings);
+  SurfacePyramid prev = make_surface_pyramid(seq.load(first).depth, seq.camera(), settings);
   Eigen::Isometry3d T_prev_curr_guess = truth(seq, first - 1).inverse() * truth(seq, first);
   for (size_t i = first + 1; i <= last; ++i) {
     const cv::Mat depth = seq.load(i).depth;
@@ -80,10 +79,11 @@ void report(const TumSequence& seq, int threads) {
     T_prev_curr_guess = T_true;
     prev = std::move(curr);
   }
-  std::printf("%d thread(s), %zu frames: wall median %.2f mean %.2f ms; CPU median %.2f mean "
-              "%.2f ms; %.2f iterations a frame; relative motion error median %.3f mm\n",
-              threads, wall.size(), median(wall), mean(wall), median(cpu), mean(cpu),
-              double(iterations) / double(wall.size()), median(err_mm));
+  std::printf(
+      "%d thread(s), %zu frames: wall median %.2f mean %.2f ms; CPU median %.2f mean "
+      "%.2f ms; %.2f iterations a frame; relative motion error median %.3f mm\n",
+      threads, wall.size(), median(wall), mean(wall), median(cpu), mean(cpu),
+      double(iterations) / double(wall.size()), median(err_mm));
 }
 
 }  // namespace
