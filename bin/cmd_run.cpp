@@ -49,8 +49,9 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
     int verified = 0;
     for (const LoopDecision& d : lp.decisions) verified += d.verified;
     std::printf("loops       %zu accepted of %d candidates verified (%zu judged, loops.csv); "
-                "vocabulary %zu words; %.2f s\n",
-                lp.loops.size(), verified, lp.decisions.size(), lp.vocabulary_words, t.loops);
+                "vocabulary %zu words; %d points fused; %.2f s\n",
+                lp.loops.size(), verified, lp.decisions.size(), lp.vocabulary_words, lp.fused_points,
+                t.loops);
   }
   if (result.global_ba_run)
     std::printf("global BA   %d keyframes, %d points, %d iterations, %d outliers removed, %.2f s\n",
@@ -113,6 +114,7 @@ void run(const RunArgs& args) {
     print_back_end_summary(seq, settings, result);
     if (settings.pipeline.evaluate) {
       evaluate_run_folder(seq, args.out, args.plot);
+      if (result.loop_pass.ran) evaluate_run_loops(seq, args.out);
       if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
     }
     std::printf("output      %s\n", args.out.c_str());

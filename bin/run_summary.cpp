@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "bin/eval_run.h"
+#include "eval/loop_accuracy.h"
+#include "eval/metrics_json.h"
 #include "pipeline/run_output.h"
 
 namespace slamkit::cli {
@@ -42,6 +44,34 @@ void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& ou
     eval_args.rpe.delta = 1;
   }
   run_eval(eval_args, true, true);
+}
+
+void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out) {
+  if (!seq.groundtruth()) return;
+  const std::filesystem::path revisits = seq.folder() / "revisits.txt";
+  std::optional<std::vector<eval::RevisitEpisode>> episodes;
+  if (std::filesystem::exists(revisits)) episodes = eval::read_revisit_episodes(revisits);
+  const eval::LoopAccuracy a =
+      eval::judge_loops(eval::read_accepted_loops(out / "loops.csv"), *seq.groundtruth(), episodes);
+  std::printf("loop check  %d accepted: %d true, %d false", a.accepted, a.true_loops,
+              a.false_loops());
+  if (a.unjudged > 0) std::printf(", %d without groundtruth", a.unjudged);
+  nlohmann::json update = {{"loops_accepted", a.accepted}, {"loops_false", a.false_loops()}};
+  if (const auto precision = a.precision()) {
+    std::printf(" (precision %.2f)", *precision);
+    update["loop_precision"] = *precision;
+  }
+  const eval::LoopCriteria criteria;
+  if (a.accepted > 0)
+    std::printf(", %d within %.1f m and %.0f deg", a.same_place, criteria.max_distance_m,
+                criteria.max_angle_deg);
+  if (a.episodes) std::printf("; %d of %d revisits found", a.episodes_found, *a.episodes);
+  if (const auto recall = a.recall()) {
+    std::printf(" (recall %.2f)", *recall);
+    update["loop_recall"] = *recall;
+  }
+  std::printf("\n");
+  eval::merge_into_metrics_file(out / "metrics.json", update);
 }
 
 void StageProgress::operator()(const std::string& stage, size_t done, size_t total) {

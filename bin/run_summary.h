@@ -19,6 +19,10 @@ void print_tracking_summary(const TumSequence& sequence, const RunResult& result
 // `plot` is false; says so when the sequence has no groundtruth.
 void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out, bool plot);
 
+// The loops of RUN/loops.csv judged against the groundtruth (and revisits.txt when the
+// sequence has one): printed, and added to RUN/metrics.json.
+void evaluate_run_loops(const TumSequence& sequence, const std::filesystem::path& out);
+
 // One progress bar per stage, drawn on stderr as the stages report.
 class StageProgress {
  public:

@@ -184,6 +184,8 @@ void visit_fields(LoopSettings& s, V& v) {
   v.field("min_correction", s.min_correction, at_least(0));
   v.field("essential_min_weight", s.essential_min_weight, at_least(1));
   v.field("correction_iterations", s.correction_iterations, at_least(1));
+  v.field("fuse_points", s.fuse_points);
+  v.field("fuse_radius", s.fuse_radius, above(0));
 }
 
 template <class V>

@@ -6,6 +6,7 @@
 #include "core/stopwatch.h"
 #include "loop/bow_matching.h"
 #include "loop/keyframe_database.h"
+#include "loop/loop_fusion.h"
 #include "loop/vocabulary_training.h"
 
 namespace slamkit {
@@ -138,9 +139,11 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
   double largest_gap = 0;
   for (const LoopDecision& d : report.decisions)
     if (d.check.accepted) largest_gap = std::max(largest_gap, d.check.pose_error);
-  if (!report.loops.empty() && largest_gap >= s.min_correction)
+  if (!report.loops.empty() && largest_gap >= s.min_correction) {
     report.correction = correct_loops(map, report.loops, {s.essential_min_weight,
                                                           s.correction_iterations});
+    if (s.fuse_points) report.fused_points = fuse_loop_points(map, report.loops, camera, settings);
+  }
   report.correction_seconds = watch.lap() / 1000.0;
   return report;
 }

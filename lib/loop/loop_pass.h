@@ -33,6 +33,7 @@ struct LoopPassReport {
   std::vector<LoopConstraint> loops;  // the accepted ones
   // Solved when loops were found and corrected (some loop's gap >= settings.min_correction).
   PoseGraphReport correction;
+  int fused_points = 0;  // loop fusion after the correction (loop_fusion.h)
   double vocabulary_seconds = 0, detection_seconds = 0, correction_seconds = 0;
 };
 

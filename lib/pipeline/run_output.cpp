@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/fingerprint.h"
+#include "core/number_format.h"
 #include "io/atomic_file.h"
 #include "io/camera_yaml.h"
 #include "io/settings_yaml.h"
@@ -69,14 +70,22 @@ nlohmann::json stage_seconds_json(const StageTimes& t) {
           {"write", t.write},     {"total", t.total}};
 }
 
-void write_loops_csv(std::ostream& out, const LoopPassReport& loops) {
-  out << "keyframe,candidate,score,min_score,consistent_neighbours,verified,matches,inliers,"
-         "pose_error_m,accepted,reason\n";
-  for (const LoopDecision& d : loops.decisions)
-    out << d.keyframe << ',' << d.candidate << ',' << d.score << ',' << d.min_score << ','
-        << d.consistent << ',' << d.verified << ',' << d.check.matches << ','
-        << d.check.inliers << ',' << d.check.pose_error << ',' << d.check.accepted << ",\""
-        << d.check.reason << "\"\n";
+// The stamps and the measured relative pose (the candidate in the keyframe's frame, for the
+// verified rows) let the evaluator judge each loop against groundtruth (eval/loop_accuracy.h).
+void write_loops_csv(std::ostream& out, const LoopPassReport& loops, const Map& map) {
+  out << "keyframe,candidate,keyframe_stamp,candidate_stamp,score,min_score,"
+         "consistent_neighbours,verified,matches,inliers,pose_error_m,tx,ty,tz,qx,qy,qz,qw,"
+         "accepted,reason\n";
+  for (const LoopDecision& d : loops.decisions) {
+    const Eigen::Vector3d t = d.check.T_keyframe_candidate.translation();
+    const Eigen::Quaterniond q(d.check.T_keyframe_candidate.linear());
+    out << d.keyframe << ',' << d.candidate << ',' << format_exact(map.keyframe(d.keyframe).stamp)
+        << ',' << format_exact(map.keyframe(d.candidate).stamp) << ',' << d.score << ','
+        << d.min_score << ',' << d.consistent << ',' << d.verified << ',' << d.check.matches << ','
+        << d.check.inliers << ',' << d.check.pose_error << ',' << t.x() << ',' << t.y() << ','
+        << t.z() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << q.w() << ','
+        << d.check.accepted << ",\"" << d.check.reason << "\"\n";
+  }
 }
 
 nlohmann::json status_json(const RunStart& run, const std::string& status) {
@@ -245,7 +254,7 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
                         [&](std::ostream& out) { write_mapping_csv(out, result); });
   if (result.loop_pass.ran)
     write_file_atomically(dir / "loops.csv",
-                          [&](std::ostream& out) { write_loops_csv(out, result.loop_pass); });
+                          [&](std::ostream& out) { write_loops_csv(out, result.loop_pass, result.map); });
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
 }

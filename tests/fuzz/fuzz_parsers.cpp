@@ -26,6 +26,16 @@ void write_bytes(const fs::path& file, const uint8_t* data, size_t size) {
   if (!out) throw std::runtime_error("fuzz: cannot write " + file.string());
 }
 
+// Through streams, which retry a read or write that a signal interrupts: fs::copy_file does not,
+// and libFuzzer's timeout alarm (every few seconds) interrupts it now and then.
+void copy_bytes(const fs::path& from, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream out(to, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+  if (!out) throw std::runtime_error("fuzz: cannot copy " + from.string() + " to " + to.string());
+}
+
 // A sequence folder whose name gives the Freiburg 1 camera, so no calibration file is needed.
 fs::path sequence_folder(const fs::path& scratch) {
   const fs::path folder = scratch / "rgbd_dataset_freiburg1_fuzz";
@@ -36,8 +46,8 @@ fs::path sequence_folder(const fs::path& scratch) {
 // rgb.txt and depth.txt: the input serves as both lists, which exercises the association too.
 void parse_tum_list(const fs::path& input, const fs::path& scratch) {
   const fs::path folder = sequence_folder(scratch);
-  fs::copy_file(input, folder / "rgb.txt", fs::copy_options::overwrite_existing);
-  fs::copy_file(input, folder / "depth.txt", fs::copy_options::overwrite_existing);
+  copy_bytes(input, folder / "rgb.txt");
+  copy_bytes(input, folder / "depth.txt");
   TumSequence::open(folder);
 }
 
@@ -67,7 +77,7 @@ void parse_png(const fs::path& input, const fs::path&) { read_png(input); }
 regress::SuiteContext suite_context(const fs::path& scratch) {
   regress::SuiteContext context;
   context.data_dir = scratch;
-  context.presets = {"desk", "loop", "lowtexture", "jerk"};
+  context.presets = {"desk", "loop", "lowtexture", "jerk", "long", "lookalike"};
   context.tum_names = [] { return std::vector<std::string>{"freiburg1_desk", "freiburg2_desk"}; };
   context.download = false;
   return context;

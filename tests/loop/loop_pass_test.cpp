@@ -17,20 +17,20 @@ TEST(LoopPass, FindsOnlyTrueRevisitsOnTheSyntheticLoopAndCorrectsTheMap) {
   const test::LoopMap& m = test::loop_map();
   Map map = m.run.map;
   Settings settings;
-  settings.loop.min_correction = 0;  // this loop's gap (1 cm) is below the default's 2 cm
   const LoopPassReport report = close_loops(map, m.sequence.camera(), settings, nullptr);
   ASSERT_TRUE(report.ran);
   EXPECT_GT(report.vocabulary_words, 0u);
   ASSERT_FALSE(report.loops.empty()) << "the return to the start was not detected";
-  // No false loop: each accepted edge measures the true relative pose.
+  // No false loop: each accepted edge measures the true relative pose, to the accuracy of the
+  // map points near the start (the loop looks at walls 2-4 m away, where depth noise is cm).
   for (const LoopConstraint& loop : report.loops) {
     const Eigen::Isometry3d truth = true_relative(m, loop.keyframe, loop.loop_keyframe);
     std::printf("loop %d -> %d: %.2f m apart, measured to %.4f m\n", loop.keyframe,
                 loop.loop_keyframe, truth.translation().norm(),
                 (loop.T_keyframe_loop.translation() - truth.translation()).norm());
-    EXPECT_LT((loop.T_keyframe_loop.translation() - truth.translation()).norm(), 0.01);
+    EXPECT_LT((loop.T_keyframe_loop.translation() - truth.translation()).norm(), 0.03);
     EXPECT_LT(Eigen::AngleAxisd(loop.T_keyframe_loop.linear().transpose() * truth.linear()).angle(),
-              1.0 * M_PI / 180);
+              1.5 * M_PI / 180);
   }
   EXPECT_TRUE(report.correction.solved);
   // Each judged candidate says why it was refused, and every accepted one passed the checks.
@@ -52,13 +52,33 @@ TEST(LoopPass, FindsOnlyTrueRevisitsOnTheSyntheticLoopAndCorrectsTheMap) {
   };
   std::printf("loop pass: %zu loops; first-to-last keyframe error %.4f -> %.4f m\n",
               report.loops.size(), error(m.run.map), error(map));
-  EXPECT_LE(error(map), error(m.run.map));
+  EXPECT_LT(error(map), 0.5 * error(m.run.map));
+
+  // Loop fusion: the last keyframe now observes points made at the start, so that global BA
+  // ties the two ends together.
+  const int last = int(map.keyframes().size()) - 1;
+  EXPECT_EQ(m.run.map.keyframe(last).shared_points.count(0), 0u);
+  EXPECT_GT(report.fused_points, 0);
+  EXPECT_GT(map.keyframe(last).shared_points.count(0), 0u);
+}
+
+TEST(LoopPass, WithoutLoopFusionTheEndsShareNoPoints) {
+  const test::LoopMap& m = test::loop_map();
+  Map map = m.run.map;
+  Settings settings;
+  settings.loop.fuse_points = false;
+  const LoopPassReport report = close_loops(map, m.sequence.camera(), settings, nullptr);
+  ASSERT_TRUE(report.correction.solved);
+  EXPECT_EQ(report.fused_points, 0);
+  EXPECT_EQ(map.keyframe(int(map.keyframes().size()) - 1).shared_points.count(0), 0u);
 }
 
 TEST(LoopPass, GapsBelowMinCorrectionLeaveTheMapAsItIs) {
   const test::LoopMap& m = test::loop_map();
   Map map = m.run.map;
-  const LoopPassReport report = close_loops(map, m.sequence.camera(), Settings{}, nullptr);
+  Settings settings;
+  settings.loop.min_correction = 1.0;  // above this loop's drift (about 0.2 m)
+  const LoopPassReport report = close_loops(map, m.sequence.camera(), settings, nullptr);
   EXPECT_FALSE(report.loops.empty());
   EXPECT_FALSE(report.correction.solved);
   for (size_t k = 0; k < map.keyframes().size(); ++k)

@@ -41,12 +41,13 @@ TEST(LoopVerification, KappaRejectsAPoseFarFromTheEstimate) {
   // its own depth still measures the same relative pose to the candidate.
   Map map = m.run.map;
   const int last = int(map.keyframes().size()) - 1;
+  const double drift = verify(map, last, 0, m.sequence.camera()).pose_error;
   Eigen::Isometry3d moved = map.keyframe(last).T_w_c;
   moved.translation() += Eigen::Vector3d(2, 0, 0);
   map.set_keyframe_pose(last, moved);
   const LoopVerification v = verify(map, last, 0, m.sequence.camera());
   EXPECT_FALSE(v.accepted);
-  EXPECT_NEAR(v.pose_error, 2.0, 0.05);
+  EXPECT_NEAR(v.pose_error, 2.0, drift + 0.01);  // the 2 m added to the tracking's own drift
   EXPECT_NE(v.reason.find("kappa"), std::string::npos) << v.reason;
 }
 

@@ -207,8 +207,7 @@ TEST(RegressCliInput, BadSuiteExitsTwoWithOneLineNamingFileAndLine) {
           "regress " + (dir / "bad.yaml").string() + " --out " + (dir / "out").string(), &output),
       2);
   EXPECT_EQ(output, "slamkit: error: " + (dir / "bad.yaml").string() +
-                        ":3: unknown synthetic preset 'spiral' (desk, loop, lowtexture, jerk, "
-                        "long, lookalike)\n");
+                        ":3: unknown synthetic preset 'spiral' (desk, loop, lowtexture, jerk, long, lookalike)\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 

@@ -30,6 +30,11 @@ struct LoopSettings {
   // the LM iterations of its optimisation.
   int essential_min_weight = 100;
   int correction_iterations = 20;
+  // (ORB-SLAM2's SearchAndFuse) After the correction, the points seen around the loop keyframe
+  // are fused into the keyframe that found it and its covisible neighbours, so that the global
+  // BA sees both ends of the loop observe the same points; search radius in pixels at level 0.
+  bool fuse_points = true;
+  double fuse_radius = 4;
 };
 
 }  // namespace slamkit

@@ -1,0 +1,117 @@
+#include "eval/loop_accuracy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "io/text_table.h"
+
+namespace slamkit::eval {
+namespace {
+
+constexpr double kMaxStampDifference = 0.02;  // as the benchmark's association
+
+size_t column(const std::filesystem::path& path, const TableRow& header, const std::string& name) {
+  const auto it = std::find(header.fields.begin(), header.fields.end(), name);
+  if (it == header.fields.end())
+    throw_input_error(path.string(), header.line, "no column '" + name + "' in the header");
+  return size_t(it - header.fields.begin());
+}
+
+bool within(const Eigen::Isometry3d& d, double max_m, double max_deg) {
+  return d.translation().norm() <= max_m &&
+         Eigen::AngleAxisd(d.rotation()).angle() <= max_deg * M_PI / 180.0;
+}
+
+}  // namespace
+
+std::vector<AcceptedLoop> read_accepted_loops(const std::filesystem::path& loops_csv) {
+  const std::vector<TableRow> rows = read_table(loops_csv);
+  if (rows.empty()) throw_input_error(loops_csv.string(), "empty: no header line");
+  const TableRow& header = rows.front();
+  const size_t stamp = column(loops_csv, header, "keyframe_stamp");
+  const size_t loop_stamp = column(loops_csv, header, "candidate_stamp");
+  const size_t accepted = column(loops_csv, header, "accepted");
+  std::vector<size_t> pose;  // tx ty tz qx qy qz qw
+  for (const char* name : {"tx", "ty", "tz", "qx", "qy", "qz", "qw"})
+    pose.push_back(column(loops_csv, header, name));
+  const size_t last = std::max({stamp, loop_stamp, accepted, pose.front(), pose.back()});
+  std::vector<AcceptedLoop> loops;
+  for (size_t r = 1; r < rows.size(); ++r) {
+    const TableRow& row = rows[r];
+    if (row.fields.size() <= last)
+      throw_input_error(loops_csv.string(), row.line, "fewer fields than the header names");
+    if (parse_number(loops_csv, row, accepted) == 0) continue;
+    double v[7];
+    for (size_t k = 0; k < 7; ++k) v[k] = parse_number(loops_csv, row, pose[k]);
+    AcceptedLoop loop{parse_number(loops_csv, row, stamp), parse_number(loops_csv, row, loop_stamp)};
+    const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
+    if (!(std::abs(q.norm() - 1) < 1e-3))
+      throw_input_error(loops_csv.string(), row.line, "the rotation is not a unit quaternion");
+    loop.measured.linear() = q.normalized().toRotationMatrix();
+    loop.measured.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+    loops.push_back(loop);
+  }
+  return loops;
+}
+
+std::vector<RevisitEpisode> read_revisit_episodes(const std::filesystem::path& revisits_txt) {
+  std::vector<RevisitEpisode> episodes;
+  double previous_frame = -2;
+  for (const TableRow& row : read_table(revisits_txt)) {
+    if (row.fields.size() != 6)
+      throw_input_error(revisits_txt.string(), row.line,
+                        "expected 'later first last later_stamp first_stamp last_stamp'");
+    const double frame = parse_number(revisits_txt, row, 0);
+    const double stamp = parse_number(revisits_txt, row, 3);
+    if (frame == previous_frame + 1)
+      episodes.back().last_stamp = stamp;
+    else
+      episodes.push_back({stamp, stamp});
+    previous_frame = frame;
+  }
+  return episodes;
+}
+
+std::optional<double> LoopAccuracy::precision() const {
+  const int judged = accepted - unjudged;
+  if (judged == 0) return accepted == 0 ? std::optional<double>(1.0) : std::nullopt;
+  return double(true_loops) / judged;
+}
+
+std::optional<double> LoopAccuracy::recall() const {
+  if (!episodes || *episodes == 0) return std::nullopt;
+  return double(episodes_found) / *episodes;
+}
+
+LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajectory& groundtruth,
+                         const std::optional<std::vector<RevisitEpisode>>& episodes,
+                         const LoopCriteria& criteria) {
+  LoopAccuracy result;
+  result.accepted = int(loops.size());
+  std::vector<double> true_stamps;
+  for (const AcceptedLoop& loop : loops) {
+    const auto a = groundtruth.nearest(loop.stamp, kMaxStampDifference);
+    const auto b = groundtruth.nearest(loop.loop_stamp, kMaxStampDifference);
+    if (!a || !b) {
+      ++result.unjudged;
+      continue;
+    }
+    const Eigen::Isometry3d truth = groundtruth.pose(*a).inverse() * groundtruth.pose(*b);
+    result.same_place += within(truth, criteria.max_distance_m, criteria.max_angle_deg);
+    if (within(truth.inverse() * loop.measured, criteria.max_error_m, criteria.max_error_deg)) {
+      ++result.true_loops;
+      true_stamps.push_back(loop.stamp);
+    }
+  }
+  if (episodes) {
+    result.episodes = int(episodes->size());
+    for (const RevisitEpisode& e : *episodes)
+      result.episodes_found += std::any_of(true_stamps.begin(), true_stamps.end(), [&](double t) {
+        return t >= e.first_stamp - 1e-6 && t <= e.last_stamp + 1e-6;
+      });
+  }
+  return result;
+}
+
+}  // namespace slamkit::eval
