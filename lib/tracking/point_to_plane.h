@@ -4,8 +4,8 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
 #include "core/settings/tracking_settings.h"
+#include "tracking/surface_pyramid.h"
 
 namespace slamkit {
 
@@ -31,12 +31,12 @@ struct DenseAlignment {
 };
 
 // Refines T_prev_curr (maps current-camera points into the previous camera) from an initial
-// guess. Depths are CV_32F metres (0 or outside the camera's valid range = none) in the
-// pinhole geometry of `camera`. Only previous-frame pixels inside box_prev (level-0 pixels;
-// the bounding box of the matched keypoints) are used; an empty box means the whole image.
-// Deterministic whatever the OpenMP thread count.
-DenseAlignment point_to_plane(const cv::Mat& depth_prev, const cv::Mat& depth_curr,
-                              const Camera& camera, const Eigen::Isometry3d& T_prev_curr_guess,
-                              const cv::Rect& box_prev, const PointToPlaneSettings& settings);
+// guess, coarse to fine over the surfaces of the two frames (make_surface_pyramid, with the
+// same settings). Only previous-frame pixels inside box_prev (level-0 pixels; the bounding box
+// of the matched keypoints) are used; an empty box means the whole image. Deterministic
+// whatever the OpenMP thread count.
+DenseAlignment point_to_plane(const SurfacePyramid& prev, const SurfacePyramid& curr,
+                              const Eigen::Isometry3d& T_prev_curr_guess, const cv::Rect& box_prev,
+                              const PointToPlaneSettings& settings);
 
 }  // namespace slamkit

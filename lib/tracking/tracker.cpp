@@ -68,6 +68,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     record.T_w_c = orthonormalised(estimate.T_w_c);
     record.inliers = int(estimate.inliers.size());
     settle_inliers(record.lost ? std::vector<Match>{} : estimate.inliers, record);
+    previous_surfaces_ = std::move(estimate.surfaces);
     // A frame re-acquired after a failure was matched to one keyframe, not the local map: its
     // pose is the least reliable, and a keyframe made from it would carry that into the map.
     if (!record.lost && !previous_lost_) choose_keyframe(frame, record);
@@ -291,10 +292,17 @@ Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
     if (!corners.empty())
       box = cv::boundingRect(corners) & cv::Rect(0, 0, camera_.width, camera_.height);
   }
-  const DenseAlignment dense =
-      point_to_plane(pinhole_depth(previous_depth_), pinhole_depth(frame.depth), camera_,
-                     T_w_prev.inverse() * T_w_c_guess, box, settings_.tracking.point_to_plane);
+  // Each frame's surfaces are built once: the current frame's serve again as the previous
+  // ones when the next frame is aligned densely too.
+  const PointToPlaneSettings& settings = settings_.tracking.point_to_plane;
   PoseEstimate estimate;
+  estimate.surfaces = make_surface_pyramid(pinhole_depth(frame.depth), camera_, settings);
+  SurfacePyramid built;  // only when the previous frame was not aligned densely
+  if (previous_surfaces_.empty())
+    built = make_surface_pyramid(pinhole_depth(previous_depth_), camera_, settings);
+  const SurfacePyramid& prev = previous_surfaces_.empty() ? built : previous_surfaces_;
+  const DenseAlignment dense =
+      point_to_plane(prev, estimate.surfaces, T_w_prev.inverse() * T_w_c_guess, box, settings);
   estimate.T_w_c = T_w_prev * dense.T_prev_curr;
   estimate.inliers = matches;  // unchecked: the motion-only BA sorts them
   estimate.support = dense.num_correspondences;

@@ -12,6 +12,7 @@
 #include "core/trajectory.h"
 #include "map/map.h"
 #include "tracking/prepared_frame.h"
+#include "tracking/surface_pyramid.h"
 #include "tracking/tracked_frame.h"
 
 namespace slamkit {
@@ -41,6 +42,7 @@ class Tracker {
     bool ok = false;
     int support = 0;  // what the failure check weighs: inlier matches or dense pairs
     std::string failure;
+    SurfacePyramid surfaces;  // the frame's, when dense alignment built them
   };
 
   Eigen::Isometry3d predict_pose(double stamp) const;
@@ -77,6 +79,7 @@ class Tracker {
   std::vector<StampedPose> poses_;    // every tracked frame, in order
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment
+  SurfacePyramid previous_surfaces_;  // the previous frame's, if dense alignment built them
   bool previous_lost_ = false;
   bool velocity_known_ = false;  // the last two frames were tracked, not lost or re-acquired
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras

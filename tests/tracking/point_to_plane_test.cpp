@@ -91,6 +91,14 @@ Views corner_views() {
   return views;
 }
 
+// Both frames' surfaces built with the alignment's settings, as the tracker builds them.
+DenseAlignment align(const cv::Mat& prev, const cv::Mat& curr, const Camera& cam,
+                     const Eigen::Isometry3d& guess, const cv::Rect& box,
+                     const PointToPlaneSettings& settings) {
+  return point_to_plane(make_surface_pyramid(prev, cam, settings),
+                        make_surface_pyramid(curr, cam, settings), guess, box, settings);
+}
+
 double translation_error(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return (a.translation() - b.translation()).norm();
 }
@@ -105,7 +113,7 @@ TEST(PointToPlane, RecoversRelativeMotionFromIdentityGuess) {
   EXPECT_EQ(settings.iterations_per_level, 3);
   // The guess is off by the whole motion: 5.4 cm and 2 degrees.
   const DenseAlignment a =
-      point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+      align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
   EXPECT_EQ(a.status, DenseAlignStatus::kConverged);
   EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005);
   EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3);
@@ -118,8 +126,7 @@ TEST(PointToPlane, RecoversRelativeMotionFromIdentityGuess) {
 TEST(PointToPlane, RecoversFromAPerturbedGuess) {
   const Views v = corner_views();
   const Eigen::Isometry3d guess = v.T_prev_curr * pose({1, 0.5, 0.2}, 3.0, {-0.03, 0.02, 0.03});
-  const DenseAlignment a =
-      point_to_plane(v.prev, v.curr, v.cam, guess, cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment a = align(v.prev, v.curr, v.cam, guess, cv::Rect(), PointToPlaneSettings{});
   EXPECT_EQ(a.status, DenseAlignStatus::kConverged);
   EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005);
   EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3);
@@ -131,7 +138,7 @@ TEST(PointToPlane, OneAndTwoPyramidLevelsBothConverge) {
     PointToPlaneSettings settings;
     settings.pyramid_levels = levels;
     const DenseAlignment a =
-        point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+        align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
     EXPECT_EQ(a.status, DenseAlignStatus::kConverged) << levels << " levels";
     EXPECT_LT(translation_error(a.T_prev_curr, v.T_prev_curr), 0.005) << levels << " levels";
     EXPECT_LT(rotation_error_deg(a.T_prev_curr, v.T_prev_curr), 0.3) << levels << " levels";
@@ -142,10 +149,10 @@ TEST(PointToPlane, CoVisibleBoxRestrictsThePreviousPixels) {
   const Views v = corner_views();
   // The left half: left wall, floor, back wall and the box's edge are all in it.
   const cv::Rect box(0, 0, 320, 480);
-  const DenseAlignment boxed = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
-                                              box, PointToPlaneSettings{});
-  const DenseAlignment whole = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
-                                              cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment boxed =
+      align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), box, PointToPlaneSettings{});
+  const DenseAlignment whole = align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                     cv::Rect(), PointToPlaneSettings{});
   EXPECT_EQ(boxed.status, DenseAlignStatus::kConverged);
   EXPECT_LT(boxed.num_correspondences, 0.6 * whole.num_correspondences);
   EXPECT_LT(translation_error(boxed.T_prev_curr, v.T_prev_curr), 0.005);
@@ -158,8 +165,8 @@ TEST(PointToPlane, SinglePlaneIsIllConditioned) {
   const Eigen::Isometry3d T_prev_curr = pose({0, 1, 0}, 1.0, {0.02, 0, 0.01});
   const cv::Mat prev = render(wall, cam, Eigen::Isometry3d::Identity());
   const cv::Mat curr = render(wall, cam, T_prev_curr);
-  const DenseAlignment a = point_to_plane(prev, curr, cam, Eigen::Isometry3d::Identity(),
-                                          cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment a =
+      align(prev, curr, cam, Eigen::Isometry3d::Identity(), cv::Rect(), PointToPlaneSettings{});
   EXPECT_EQ(a.status, DenseAlignStatus::kIllConditioned);
   EXPECT_FALSE(a.ok());
   EXPECT_LT(a.min_eigenvalue, 1e-6);
@@ -168,8 +175,8 @@ TEST(PointToPlane, SinglePlaneIsIllConditioned) {
 TEST(PointToPlane, NoDepthMeansTooFewCorrespondences) {
   const Camera cam = Camera::freiburg3();
   const cv::Mat empty(cam.height, cam.width, CV_32F, cv::Scalar(0));
-  const DenseAlignment a = point_to_plane(empty, empty, cam, Eigen::Isometry3d::Identity(),
-                                          cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment a =
+      align(empty, empty, cam, Eigen::Isometry3d::Identity(), cv::Rect(), PointToPlaneSettings{});
   EXPECT_EQ(a.status, DenseAlignStatus::kTooFewCorrespondences);
   EXPECT_EQ(a.num_correspondences, 0);
 }
@@ -178,11 +185,11 @@ TEST(PointToPlane, SameResultWhateverTheThreadCount) {
   const Views v = corner_views();
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
-  const DenseAlignment one = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
-                                            cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment one = align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(), cv::Rect(),
+                                   PointToPlaneSettings{});
   omp_set_num_threads(3);
-  const DenseAlignment three = point_to_plane(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
-                                              cv::Rect(), PointToPlaneSettings{});
+  const DenseAlignment three = align(v.prev, v.curr, v.cam, Eigen::Isometry3d::Identity(),
+                                     cv::Rect(), PointToPlaneSettings{});
   omp_set_num_threads(threads);
   EXPECT_EQ(one.T_prev_curr.matrix(), three.T_prev_curr.matrix());  // bit for bit
   EXPECT_EQ(one.min_eigenvalue, three.min_eigenvalue);
@@ -207,9 +214,8 @@ Eigen::Vector3d mean_rotation_bias_deg(const PointToPlaneSettings& settings) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   constexpr int kDraws = 6;
   for (uint32_t seed = 1; seed <= kDraws; ++seed) {
-    const DenseAlignment a =
-        point_to_plane(with_noise(v.prev, 2 * seed), with_noise(v.prev, 2 * seed + 1), v.cam,
-                       Eigen::Isometry3d::Identity(), cv::Rect(), settings);
+    const DenseAlignment a = align(with_noise(v.prev, 2 * seed), with_noise(v.prev, 2 * seed + 1),
+                                   v.cam, Eigen::Isometry3d::Identity(), cv::Rect(), settings);
     const Eigen::AngleAxisd r(a.T_prev_curr.linear());
     sum += r.angle() * r.axis() / kDeg;
   }
