@@ -5,6 +5,7 @@
 #include "bin/eval_run.h"
 #include "eval/loop_accuracy.h"
 #include "eval/metrics_json.h"
+#include "io/path_kind.h"
 #include "pipeline/run_output.h"
 
 namespace slamkit::cli {
@@ -50,7 +51,7 @@ void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out
   if (!seq.groundtruth()) return;
   const std::filesystem::path revisits = seq.folder() / "revisits.txt";
   std::optional<std::vector<eval::RevisitEpisode>> episodes;
-  if (std::filesystem::exists(revisits)) episodes = eval::read_revisit_episodes(revisits);
+  if (path_kind(revisits) == PathKind::kFile) episodes = eval::read_revisit_episodes(revisits);
   const eval::LoopAccuracy a =
       eval::judge_loops(eval::read_accepted_loops(out / "loops.csv"), *seq.groundtruth(), episodes);
   std::printf("loop check  %d accepted: %d true, %d false", a.accepted, a.true_loops,
@@ -65,7 +66,8 @@ void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out
   if (a.accepted > 0)
     std::printf(", %d within %.1f m and %.0f deg", a.same_place, criteria.max_distance_m,
                 criteria.max_angle_deg);
-  if (a.episodes) std::printf("; %d of %d revisits found", a.episodes_found, *a.episodes);
+  if (a.episodes && *a.episodes > 0)
+    std::printf("; %d of %d revisits found", a.episodes_found, *a.episodes);
   if (const auto recall = a.recall()) {
     std::printf(" (recall %.2f)", *recall);
     update["loop_recall"] = *recall;

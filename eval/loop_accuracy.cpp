@@ -1,6 +1,7 @@
 #include "eval/loop_accuracy.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/error.h"
@@ -28,28 +29,26 @@ bool within(const Eigen::Isometry3d& d, double max_m, double max_deg) {
 std::vector<AcceptedLoop> read_accepted_loops(const std::filesystem::path& loops_csv) {
   const std::vector<TableRow> rows = read_table(loops_csv);
   if (rows.empty()) throw_input_error(loops_csv.string(), "empty: no header line");
-  const TableRow& header = rows.front();
-  const size_t stamp = column(loops_csv, header, "keyframe_stamp");
-  const size_t loop_stamp = column(loops_csv, header, "candidate_stamp");
-  const size_t accepted = column(loops_csv, header, "accepted");
-  std::vector<size_t> pose;  // tx ty tz qx qy qz qw
-  for (const char* name : {"tx", "ty", "tz", "qx", "qy", "qz", "qw"})
-    pose.push_back(column(loops_csv, header, name));
-  const size_t last = std::max({stamp, loop_stamp, accepted, pose.front(), pose.back()});
+  // The columns read, wherever the header puts them.
+  constexpr std::array<const char*, 10> kNames = {
+      "accepted", "keyframe_stamp", "candidate_stamp", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
+  std::array<size_t, kNames.size()> at{};
+  for (size_t i = 0; i < kNames.size(); ++i) at[i] = column(loops_csv, rows.front(), kNames[i]);
+  const size_t last = *std::max_element(at.begin(), at.end());
   std::vector<AcceptedLoop> loops;
   for (size_t r = 1; r < rows.size(); ++r) {
     const TableRow& row = rows[r];
     if (row.fields.size() <= last)
       throw_input_error(loops_csv.string(), row.line, "fewer fields than the header names");
-    if (parse_number(loops_csv, row, accepted) == 0) continue;
-    double v[7];
-    for (size_t k = 0; k < 7; ++k) v[k] = parse_number(loops_csv, row, pose[k]);
-    AcceptedLoop loop{parse_number(loops_csv, row, stamp), parse_number(loops_csv, row, loop_stamp)};
-    const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
+    std::array<double, kNames.size()> v{};
+    for (size_t i = 0; i < kNames.size(); ++i) v[i] = parse_number(loops_csv, row, at[i]);
+    if (v[0] == 0) continue;
+    AcceptedLoop loop{v[1], v[2]};
+    const Eigen::Quaterniond q(v[9], v[6], v[7], v[8]);
     if (!(std::abs(q.norm() - 1) < 1e-3))
       throw_input_error(loops_csv.string(), row.line, "the rotation is not a unit quaternion");
     loop.measured.linear() = q.normalized().toRotationMatrix();
-    loop.measured.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+    loop.measured.translation() = Eigen::Vector3d(v[3], v[4], v[5]);
     loops.push_back(loop);
   }
   return loops;

@@ -13,8 +13,8 @@
 namespace slamkit::eval {
 
 struct AcceptedLoop {
-  double stamp = 0;       // the keyframe that found the loop
-  double loop_stamp = 0;  // the earlier keyframe it closed on
+  double stamp = 0;                                            // the keyframe that found the loop
+  double loop_stamp = 0;                                       // the earlier keyframe it closed on
   Eigen::Isometry3d measured = Eigen::Isometry3d::Identity();  // loop keyframe in keyframe's
 };
 
@@ -43,8 +43,8 @@ struct LoopCriteria {
 struct LoopAccuracy {
   int accepted = 0;
   int true_loops = 0;
-  int same_place = 0;  // keyframes within max_distance_m and max_angle_deg of each other
-  int unjudged = 0;  // a keyframe without a groundtruth pose within 20 ms
+  int same_place = 0;           // keyframes within max_distance_m and max_angle_deg of each other
+  int unjudged = 0;             // a keyframe without a groundtruth pose within 20 ms
   std::optional<int> episodes;  // with revisits.txt only
   int episodes_found = 0;       // episodes holding a true loop's keyframe
 

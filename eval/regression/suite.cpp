@@ -151,7 +151,8 @@ class SuiteReader : YamlChecks {
   bool apply_settings(const YAML::Node& node, Settings& settings) {
     if (node.IsScalar()) {
       const fs::path file = relative_to_suite(node.Scalar());
-      if (path_kind(file) != PathKind::kFile) fail(node, "settings file '" + file.string() + "' not found");
+      if (path_kind(file) != PathKind::kFile)
+        fail(node, "settings file '" + file.string() + "' not found");
       read_settings_yaml(file, settings);
       return true;
     }

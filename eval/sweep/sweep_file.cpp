@@ -70,7 +70,8 @@ class SweepReader : regress::YamlChecks {
     if (node.IsScalar()) {
       fs::path suite = scalar(node, "suite");
       if (suite.is_relative()) suite = file_.parent_path() / suite;
-      if (path_kind(suite) != PathKind::kFile) fail(node, "suite file '" + suite.string() + "' not found");
+      if (path_kind(suite) != PathKind::kFile)
+        fail(node, "suite file '" + suite.string() + "' not found");
       return regress::load_suite(suite, context_);
     }
     if (!node.IsMap()) fail(node, "suite must be a suite file or a map with 'entries'");

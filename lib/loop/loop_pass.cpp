@@ -45,13 +45,12 @@ class LoopDetector {
       query.min_score = 1;
       for (int neighbour : keyframe.covisible) {
         query.exclude.insert(neighbour);
-        query.min_score = std::min(query.min_score, l1_score(bows_[size_t(k)].words,
-                                                             bows_[size_t(neighbour)].words));
+        query.min_score = std::min(
+            query.min_score, l1_score(bows_[size_t(k)].words, bows_[size_t(neighbour)].words));
       }
       for (int recent = std::max(0, k - s.recent_keyframes); recent < k; ++recent)
         query.exclude.insert(recent);
-      loop = judge(k, database_.query(bows_[size_t(k)].words, query), query.min_score,
-                   decisions);
+      loop = judge(k, database_.query(bows_[size_t(k)].words, query), query.min_score, decisions);
     }
     database_.add(k, bows_[size_t(k)].words);
     return loop;
@@ -74,8 +73,8 @@ class LoopDetector {
       for (int neighbour : map_.best_covisible(c.keyframe, s.consistency_neighbours))
         d.consistent += int(candidate_set.count(neighbour));
       if (d.consistent < s.min_consistent_neighbours) {
-        d.check.reason = "consistency: " + std::to_string(d.consistent) + " neighbours, fewer than " +
-                         std::to_string(s.min_consistent_neighbours);
+        d.check.reason = "consistency: " + std::to_string(d.consistent) +
+                         " neighbours, fewer than " + std::to_string(s.min_consistent_neighbours);
       } else if (loop || verified >= s.max_verified) {
         d.check.reason = loop ? "a loop was accepted already" : "not among the best verified";
       } else {
@@ -95,10 +94,9 @@ class LoopDetector {
     const Keyframe& a = map_.keyframe(k);
     const Keyframe& b = map_.keyframe(candidate);
     std::vector<KeypointPair> pairs;
-    for (const FeaturePair& p :
-         match_by_nodes(usable_features(map_, a, bows_[size_t(k)].nodes, true), a.descriptors,
-                        usable_features(map_, b, bows_[size_t(candidate)].nodes, false),
-                        b.descriptors))
+    for (const FeaturePair& p : match_by_nodes(
+             usable_features(map_, a, bows_[size_t(k)].nodes, true), a.descriptors,
+             usable_features(map_, b, bows_[size_t(candidate)].nodes, false), b.descriptors))
       pairs.push_back({p.a, p.b});
     return pairs;
   }
@@ -140,8 +138,8 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
   for (const LoopDecision& d : report.decisions)
     if (d.check.accepted) largest_gap = std::max(largest_gap, d.check.pose_error);
   if (!report.loops.empty() && largest_gap >= s.min_correction) {
-    report.correction = correct_loops(map, report.loops, {s.essential_min_weight,
-                                                          s.correction_iterations});
+    report.correction =
+        correct_loops(map, report.loops, {s.essential_min_weight, s.correction_iterations});
     if (s.fuse_points) report.fused_points = fuse_loop_points(map, report.loops, camera, settings);
   }
   report.correction_seconds = watch.lap() / 1000.0;

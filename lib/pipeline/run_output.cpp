@@ -65,7 +65,7 @@ void write_mapping_csv(std::ostream& out, const RunResult& result) {
 }
 
 nlohmann::json stage_seconds_json(const StageTimes& t) {
-  return {{"prepare", t.prepare}, {"track", t.track},   {"local_ba", t.local_ba},
+  return {{"prepare", t.prepare}, {"track", t.track},         {"local_ba", t.local_ba},
           {"loops", t.loops},     {"global_ba", t.global_ba}, {"fusion", t.fusion},
           {"write", t.write},     {"total", t.total}};
 }
@@ -253,8 +253,9 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
   write_file_atomically(dir / "mapping.csv",
                         [&](std::ostream& out) { write_mapping_csv(out, result); });
   if (result.loop_pass.ran)
-    write_file_atomically(dir / "loops.csv",
-                          [&](std::ostream& out) { write_loops_csv(out, result.loop_pass, result.map); });
+    write_file_atomically(dir / "loops.csv", [&](std::ostream& out) {
+      write_loops_csv(out, result.loop_pass, result.map);
+    });
   write_settings_yaml(dir / "settings.yaml", settings);
   write_camera_yaml(dir / "camera.yaml", camera);
 }

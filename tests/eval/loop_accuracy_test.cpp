@@ -79,11 +79,11 @@ TEST(LoopAccuracy, TrueFalseAndUnjudgedLoopsAndTheRevisitsFound) {
   Eigen::Isometry3d off_by_30cm = relative(20, 0);
   off_by_30cm.translation().x() += 0.3;
   const std::vector<AcceptedLoop> loops = {
-      {120, 100, relative(20, 0)},   // back at the start, measured right: true
-      {120, 110, relative(20, 0)},   // a look-alike: the far side (4 m) measured as here
-      {119, 100, relative(19, 0)},   // 0.63 m and 18 degrees apart, measured right: true
-      {150, 100, relative(20, 0)},   // no groundtruth at 150: unjudged
-      {120, 100, off_by_30cm},       // the right place measured 30 cm off: false
+      {120, 100, relative(20, 0)},  // back at the start, measured right: true
+      {120, 110, relative(20, 0)},  // a look-alike: the far side (4 m) measured as here
+      {119, 100, relative(19, 0)},  // 0.63 m and 18 degrees apart, measured right: true
+      {150, 100, relative(20, 0)},  // no groundtruth at 150: unjudged
+      {120, 100, off_by_30cm},      // the right place measured 30 cm off: false
   };
   const std::vector<RevisitEpisode> episodes = {{119, 120}, {105, 106}};
   const LoopAccuracy a = judge_loops(loops, gt, episodes);

@@ -110,7 +110,8 @@ const std::vector<FuzzTarget>& fuzz_targets() {
       {"settings", parse_settings},
       {"calibration", parse_calibration},
       {"png", parse_png},
-      {"suite", parse_suite},             {"sweep", parse_sweep},
+      {"suite", parse_suite},
+      {"sweep", parse_sweep},
   };
   return targets;
 }

@@ -45,9 +45,8 @@ TEST(LoopPass, FindsOnlyTrueRevisitsOnTheSyntheticLoopAndCorrectsTheMap) {
   // The last keyframe moved towards its true pose relative to the first.
   const auto error = [&](const Map& mp) {
     const Eigen::Isometry3d estimated = mp.keyframe(0).T_c_w * mp.keyframes().back().T_w_c;
-    const Eigen::Isometry3d truth =
-        test::true_pose(m.sequence, mp.keyframe(0).stamp).inverse() *
-        test::true_pose(m.sequence, mp.keyframes().back().stamp);
+    const Eigen::Isometry3d truth = test::true_pose(m.sequence, mp.keyframe(0).stamp).inverse() *
+                                    test::true_pose(m.sequence, mp.keyframes().back().stamp);
     return (estimated.translation() - truth.translation()).norm();
   };
   std::printf("loop pass: %zu loops; first-to-last keyframe error %.4f -> %.4f m\n",

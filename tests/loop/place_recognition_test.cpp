@@ -36,8 +36,7 @@ bool same_place(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
 
 TEST(PlaceRecognition, SyntheticLoopEndFindsItsStart) {
   const int frames = 150;
-  const TumSequence seq =
-      TumSequence::open(test::synthetic_sequence(synth::Preset::kLoop, frames));
+  const TumSequence seq = TumSequence::open(test::synthetic_sequence(synth::Preset::kLoop, frames));
   const std::vector<cv::Mat> descriptors = sequence_descriptors(seq, OrbSettings{}, 1);
   std::vector<cv::Mat> every_fifth;
   for (int i = 0; i < frames; i += 5) every_fifth.push_back(descriptors[i]);
@@ -50,7 +49,8 @@ TEST(PlaceRecognition, SyntheticLoopEndFindsItsStart) {
   for (int query : {12, 53, 77, 101}) {
     const auto candidates = db.query(vocabulary.transform(descriptors[query], 2).words);
     ASSERT_FALSE(candidates.empty());
-    EXPECT_TRUE(candidates[0].keyframe == query / 5 * 5 || candidates[0].keyframe == query / 5 * 5 + 5)
+    EXPECT_TRUE(candidates[0].keyframe == query / 5 * 5 ||
+                candidates[0].keyframe == query / 5 * 5 + 5)
         << "query " << query << " best " << candidates[0].keyframe;
   }
   // The loop: the last frames, with the recent keyframes excluded (as loop detection does),
@@ -59,8 +59,7 @@ TEST(PlaceRecognition, SyntheticLoopEndFindsItsStart) {
   for (int i = 100; i < frames; i += 5) old_only.exclude.insert(i);
   // (The preset swings the yaw: 142 is still 32 degrees from the start, 146 and 149 within 15.)
   for (int query : {146, 149}) {
-    const auto candidates =
-        db.query(vocabulary.transform(descriptors[query], 2).words, old_only);
+    const auto candidates = db.query(vocabulary.transform(descriptors[query], 2).words, old_only);
     ASSERT_FALSE(candidates.empty());
     EXPECT_TRUE(same_place(true_pose(seq, query), true_pose(seq, candidates[0].keyframe)))
         << "query " << query << " best " << candidates[0].keyframe << " score "
