@@ -49,9 +49,11 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
     int verified = 0;
     for (const LoopDecision& d : lp.decisions) verified += d.verified;
     std::printf("loops       %zu accepted of %d candidates verified (%zu judged, loops.csv); "
-                "vocabulary %zu words; %d points fused; %.2f s\n",
-                lp.loops.size(), verified, lp.decisions.size(), lp.vocabulary_words, lp.fused_points,
-                t.loops);
+                "%d points fused; %.2f s (vocabulary of %zu words %.2f, detection %.2f, "
+                "correction %.2f)\n",
+                lp.loops.size(), verified, lp.decisions.size(), lp.fused_points, t.loops,
+                lp.vocabulary_words, lp.vocabulary_seconds, lp.detection_seconds,
+                lp.correction_seconds);
   }
   if (result.global_ba_run)
     std::printf("global BA   %d keyframes, %d points, %d iterations, %d outliers removed, %.2f s\n",

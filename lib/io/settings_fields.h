@@ -180,6 +180,9 @@ void visit_fields(LoopSettings& s, V& v) {
   v.field("max_verified", s.max_verified, at_least(1));
   v.field("min_matches", s.min_matches, at_least(3));
   v.field("min_inliers", s.min_inliers, at_least(3));
+  v.field("neighbourhood_radius", s.neighbourhood_radius, above(0));
+  v.field("neighbourhood_max_distance", s.neighbourhood_max_distance, at_least(0));
+  v.field("min_neighbourhood_inliers", s.min_neighbourhood_inliers, at_least(0));
   v.field("max_pose_error", s.max_pose_error, above(0));
   v.field("min_correction", s.min_correction, at_least(0));
   v.field("essential_min_weight", s.essential_min_weight, at_least(1));

@@ -1,9 +1,11 @@
 #include "loop/loop_verification.h"
 
 #include <cstdio>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "loop/loop_neighbourhood.h"
 #include "tracking/icp_svd_ransac.h"
 #include "tracking/motion_only_ba.h"
 
@@ -28,7 +30,7 @@ LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
   // Pairs: the candidate's map point in the candidate's camera, the keyframe's keypoint
   // back-projected from its depth.
   std::vector<Eigen::Vector3d> q_candidate, q_keyframe;
-  std::vector<int> keypoint_of_pair;
+  std::vector<int> keypoint_of_pair, point_of_pair;
   for (const KeypointPair& m : matches) {
     const float depth = query.depths[size_t(m.keyframe_keypoint)];
     const int point = other.point_ids[size_t(m.candidate_keypoint)];
@@ -36,6 +38,7 @@ LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
     q_candidate.push_back(other.T_c_w * map.point(point).p_w);
     q_keyframe.push_back(camera.back_project(query.undistorted[size_t(m.keyframe_keypoint)], depth));
     keypoint_of_pair.push_back(m.keyframe_keypoint);
+    point_of_pair.push_back(point);
   }
   result.matches = int(q_candidate.size());
   if (result.matches < settings.min_matches) {
@@ -61,10 +64,37 @@ LoopVerification verify_loop(const Map& map, int keyframe, int candidate,
                             map.pyramid().scale(query.keypoints[size_t(keypoint)].octave)});
   }
   const PoseRefinement refined = motion_only_ba(observations, camera, fit.T_prev_curr, motion_ba);
-  result.T_keyframe_candidate = (refined.ok ? refined.T_w_c : fit.T_prev_curr).inverse();
+  Eigen::Isometry3d T_candidate_keyframe = refined.ok ? refined.T_w_c : fit.T_prev_curr;
+
+  // The neighbourhood check; the loop edge is then the pose refined on every match.
+  std::vector<bool> taken(query.keypoints.size(), false);
+  std::set<int> paired_points;
+  for (size_t i = 0; i < fit.inliers.size(); ++i)
+    if (fit.inliers[i]) {
+      taken[size_t(keypoint_of_pair[i])] = true;
+      paired_points.insert(point_of_pair[i]);
+    }
+  for (const LoopPointMatch& m :
+       match_loop_neighbourhood(map, keyframe, candidate, other.T_w_c * T_candidate_keyframe,
+                                taken, camera, settings.neighbourhood_radius,
+                                settings.neighbourhood_max_distance)) {
+    if (paired_points.count(m.point)) continue;
+    const size_t keypoint = size_t(m.keypoint);
+    observations.push_back({other.T_c_w * map.point(m.point).p_w, query.undistorted[keypoint],
+                            query.depths[keypoint],
+                            map.pyramid().scale(query.keypoints[keypoint].octave)});
+  }
+  const PoseRefinement all = motion_only_ba(observations, camera, T_candidate_keyframe, motion_ba);
+  result.neighbourhood_inliers = all.ok ? all.num_inliers : 0;
+  result.T_keyframe_candidate = (all.ok ? all.T_w_c : T_candidate_keyframe).inverse();
   result.pose_error = (result.T_keyframe_candidate.translation() -
                        result.T_keyframe_candidate_estimated.translation())
                           .norm();
+  if (result.neighbourhood_inliers < settings.min_neighbourhood_inliers) {
+    result.reason = fewer_than(result.neighbourhood_inliers, "inliers with the neighbourhood",
+                               settings.min_neighbourhood_inliers);
+    return result;
+  }
   if (result.pose_error >= settings.max_pose_error) {
     char text[96];
     std::snprintf(text, sizeof text, "pose %.2f m from the estimate, kappa %.2f m",

@@ -26,6 +26,9 @@ struct KeypointPair {
 struct LoopVerification {
   int matches = 0;  // matches usable in 3D: depth at the keyframe's, a map point at the other
   int inliers = 0;
+  // Inliers of the pose refined on the RANSAC inliers and the matches of the candidate's
+  // neighbourhood projected with it.
+  int neighbourhood_inliers = 0;
   // The candidate's pose in the keyframe's frame: measured (valid when inliers were found) and
   // as the map currently has it; pose_error is the distance between their translations.
   Eigen::Isometry3d T_keyframe_candidate = Eigen::Isometry3d::Identity();

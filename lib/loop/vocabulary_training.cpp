@@ -31,12 +31,22 @@ std::vector<VocabularyNode> build_tree(const std::vector<cv::Mat>& images,
     for (int r = 0; r < image.rows; ++r) level[0].members.push_back(image.ptr<uint8_t>(r));
   }
   for (int depth = 1; depth <= settings.depth && !level.empty(); ++depth) {
-    std::vector<Split> next;
-    for (const Split& split : level) {
+    // The level's nodes split independently (each with its own seed): in parallel, then linked
+    // in order, so the tree is the same at any thread count. A single node (the root) is
+    // parallel inside k_medians instead.
+    std::vector<Clustering> clusterings(level.size());
+#pragma omp parallel for schedule(dynamic) if (level.size() > 1)
+    for (long i = 0; i < long(level.size()); ++i) {
+      const Split& split = level[size_t(i)];
       if (split.members.size() < 2) continue;  // a leaf
-      const Clustering c = k_medians(split.members, settings.branching, settings.iterations,
-                                     node_seed(settings.seed, split.node));
-      if (c.centres.size() < 2) continue;  // identical members: nothing to split
+      clusterings[size_t(i)] = k_medians(split.members, settings.branching, settings.iterations,
+                                         node_seed(settings.seed, split.node));
+    }
+    std::vector<Split> next;
+    for (size_t i = 0; i < level.size(); ++i) {
+      const Split& split = level[i];
+      const Clustering& c = clusterings[i];
+      if (c.centres.size() < 2) continue;  // a leaf, or identical members: nothing to split
       const size_t first = next.size();
       for (const Descriptor& centre : c.centres) {
         next.push_back({NodeId(nodes.size()), {}});

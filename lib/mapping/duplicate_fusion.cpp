@@ -5,6 +5,7 @@
 
 #include "features/descriptor.h"
 #include "features/keypoint_grid.h"
+#include "map/point_projection.h"
 
 namespace slamkit {
 
@@ -12,7 +13,6 @@ std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<in
                                     const Camera& camera, const FusionGates& gates) {
   const Keyframe& k = map.keyframe(keyframe);
   const KeypointGrid grid(k.undistorted);
-  const Eigen::Vector3d centre = k.centre();
   std::vector<int> candidates;
   std::vector<int> gained;
   for (int id : points) {
@@ -20,20 +20,15 @@ std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<in
     if (p.bad || std::any_of(p.observations.begin(), p.observations.end(),
                              [&](const Observation& o) { return o.keyframe == keyframe; }))
       continue;
-    const Eigen::Vector3d p_c = map.keyframe(keyframe).T_c_w * p.p_w;
-    if (p_c.z() <= 0) continue;
-    const Eigen::Vector2d uv = camera.project(p_c);
-    if (!camera.contains(uv)) continue;
-    const Eigen::Vector3d ray = p.p_w - centre;
-    const double distance = ray.norm();
-    if (distance < 0.8 * p.min_distance || distance > 1.2 * p.max_distance) continue;
-    if (ray.dot(p.normal) < gates.min_view_cos * distance * p.normal.norm()) continue;
-    const int octave = map.predict_octave(p, distance);
+    const auto projection = project_point(map, p, k.T_w_c, camera, gates.min_view_cos);
+    if (!projection) continue;
+    const Eigen::Vector2d& uv = projection->uv;
+    const int octave = projection->octave;
     const double scale = map.pyramid().scale(octave);
     grid.within(uv, gates.radius * scale, candidates);
 
     int best = std::numeric_limits<int>::max(), best_keypoint = -1;
-    const double predicted_disparity = gates.virtual_bf / p_c.z();
+    const double predicted_disparity = gates.virtual_bf / projection->p_c.z();
     for (int c : candidates) {
       const int level = k.keypoints[size_t(c)].octave;
       if (level < octave - 1 || level > octave) continue;

@@ -74,7 +74,7 @@ nlohmann::json stage_seconds_json(const StageTimes& t) {
 // verified rows) let the evaluator judge each loop against groundtruth (eval/loop_accuracy.h).
 void write_loops_csv(std::ostream& out, const LoopPassReport& loops, const Map& map) {
   out << "keyframe,candidate,keyframe_stamp,candidate_stamp,score,min_score,"
-         "consistent_neighbours,verified,matches,inliers,pose_error_m,tx,ty,tz,qx,qy,qz,qw,"
+         "consistent_neighbours,verified,matches,inliers,neighbourhood_inliers,pose_error_m,tx,ty,tz,qx,qy,qz,qw,"
          "accepted,reason\n";
   for (const LoopDecision& d : loops.decisions) {
     const Eigen::Vector3d t = d.check.T_keyframe_candidate.translation();
@@ -82,7 +82,7 @@ void write_loops_csv(std::ostream& out, const LoopPassReport& loops, const Map& 
     out << d.keyframe << ',' << d.candidate << ',' << format_exact(map.keyframe(d.keyframe).stamp)
         << ',' << format_exact(map.keyframe(d.candidate).stamp) << ',' << d.score << ','
         << d.min_score << ',' << d.consistent << ',' << d.verified << ',' << d.check.matches << ','
-        << d.check.inliers << ',' << d.check.pose_error << ',' << t.x() << ',' << t.y() << ','
+        << d.check.inliers << ',' << d.check.neighbourhood_inliers << ',' << d.check.pose_error << ',' << t.x() << ',' << t.y() << ','
         << t.z() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << q.w() << ','
         << d.check.accepted << ",\"" << d.check.reason << "\"\n";
   }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 
 #include "features/descriptor.h"
@@ -96,6 +97,22 @@ TEST(KMedians, CentreIsTheBitwiseMajority) {
   const Descriptor centre = majority_descriptor({a, b, c});
   EXPECT_EQ(centre[0], 0b0011);
   EXPECT_EQ(majority_descriptor({a, c})[0], 0b0001) << "a tie gives 0: the AND of two";
+}
+
+TEST(KMedians, MajorityOfManyMembersEqualsCountingEachBit) {
+  // More than 255 members: the counts carry over between the lane-wise partial sums.
+  std::mt19937 rng(4);
+  const cv::Mat d = test::random_descriptors(1001, rng);
+  std::vector<const uint8_t*> rows;
+  std::array<int, 256> ones{};
+  for (int r = 0; r < d.rows; ++r) {
+    rows.push_back(d.ptr<uint8_t>(r));
+    for (int bit = 0; bit < 256; ++bit) ones[size_t(bit)] += (d.at<uint8_t>(r, bit / 8) >> (bit % 8)) & 1;
+  }
+  const Descriptor centre = majority_descriptor(rows);
+  for (int bit = 0; bit < 256; ++bit)
+    EXPECT_EQ((centre[size_t(bit / 8)] >> (bit % 8)) & 1, 2 * ones[size_t(bit)] > d.rows ? 1 : 0)
+        << "bit " << bit << ": " << ones[size_t(bit)] << " of " << d.rows << " set";
 }
 
 TEST(KMedians, SeparatedGroupsBecomeTheClusters) {

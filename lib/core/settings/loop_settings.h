@@ -20,7 +20,14 @@ struct LoopSettings {
   int max_verified = 3;             // (ours) candidates verified per keyframe, best score first
   int min_matches = 50;             // (paper) fewer ORB matches: no loop
   int min_inliers = 20;             // (ORB-SLAM2) RANSAC inliers of the relative pose
-  double max_pose_error = 1.0;      // (paper) kappa, metres
+  // (ORB-SLAM2) With the measured pose, the points around the candidate (its own and its
+  // covisible neighbours') are projected into the keyframe (radius in pixels at level 0,
+  // Hamming at most neighbourhood_max_distance) and the pose refined on every match: a loop
+  // needs at least this many inliers in all.
+  double neighbourhood_radius = 10;
+  int neighbourhood_max_distance = 50;
+  int min_neighbourhood_inliers = 40;
+  double max_pose_error = 1.0;  // (paper) kappa, metres
   // (ours) The map is corrected only when some accepted loop's measured pose differs from the
   // map's by at least this (metres). Below it the loops measure noise: a refined loop pose is
   // good to 1-3 mm (synthetic loop 200), and correcting by smaller gaps made synthetic

@@ -1,0 +1,26 @@
+#pragma once
+// Where a map point falls in a view, behind ORB-SLAM2's projection gates (ORBSLAM2_BACKEND.md
+// section 1): in front of the camera and inside the image, its distance within the point's
+// scale-valid range (0.8 x min to 1.2 x max), seen at most about 60 degrees off its mean
+// viewing direction. Shared by duplicate fusion and the loop's neighbourhood search.
+#include <Eigen/Geometry>
+#include <optional>
+
+#include "core/camera.h"
+#include "map/map.h"
+
+namespace slamkit {
+
+struct PointProjection {
+  Eigen::Vector3d p_c = Eigen::Vector3d::Zero();  // the point in the camera's frame
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();   // its pixel (undistorted)
+  int octave = 0;                                 // the level it should be detected at
+};
+
+// The projection of `point` into a camera at T_w_c, or nothing when a gate refuses it.
+// min_view_cos: the cosine of the largest angle to the point's mean viewing direction.
+std::optional<PointProjection> project_point(const Map& map, const MapPoint& point,
+                                             const Eigen::Isometry3d& T_w_c, const Camera& camera,
+                                             double min_view_cos);
+
+}  // namespace slamkit
