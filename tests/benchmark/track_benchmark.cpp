@@ -1,7 +1,8 @@
-// The benchmark (a target, not a test): on real TUM frames ($SLAMKIT_DATA fr2/desk) and on a
-// synthetic 600-frame `desk` sequence rendered for the run, the front end alone (`slamkit
-// track`: per-stage median milliseconds per frame, frames per second) and the whole pipeline
-// (`slamkit run`: the wall time of each stage, decode to map.ply, and frames per second).
+// The benchmark (a target, not a test): on real TUM frames ($SLAMKIT_DATA fr2/desk) and on
+// synthetic 600-frame `desk` and `loop` sequences rendered for the run, the front end alone
+// (`slamkit track`: per-stage median milliseconds per frame, frames per second) and the whole
+// pipeline (`slamkit run`: the wall time of each stage, decode to map.ply, frames per second,
+// the loop pass per keyframe), and the ratio of the two wall times.
 //   cmake --build build --target benchmark        (or: build/tests/benchmark/slamkit_benchmark)
 #include <omp.h>
 
@@ -31,7 +32,8 @@ double decode_floor_ms(const TumSequence& sequence, int threads) {
   return watch.lap() / double(sequence.size());
 }
 
-void report_front_end(const std::string& name, const TumSequence& sequence, int threads) {
+// Returns the wall seconds, decode to trajectory.
+double report_front_end(const std::string& name, const TumSequence& sequence, int threads) {
   Settings settings;
   settings.pipeline.threads = threads;
   const RunResult result = track_sequence(sequence, front_end_only(settings));
@@ -53,9 +55,11 @@ void report_front_end(const std::string& name, const TumSequence& sequence, int 
       "  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
       "ms/frame: %.2fx the floor\n",
       floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
+  return result.seconds.total;
 }
 
-void report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {
+// Returns the wall seconds, decode to map.ply.
+double report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {
   Settings settings;
   settings.pipeline.threads = threads;
   settings.pipeline.evaluate = false;
@@ -75,6 +79,13 @@ void report_pipeline(const std::string& name, const TumSequence& sequence, int t
               wait);
   std::printf("  local BA   %6.2f s  (%d solves beside tracking, %.1f ms each)\n", t.local_ba,
               local_runs, local_runs ? 1000 * t.local_ba / local_runs : 0.0);
+  const LoopPassReport& loops = result.loop_pass;
+  const double per_keyframe_ms =
+      loops.keyframes ? 1000 * t.loops / double(loops.keyframes) : 0.0;
+  std::printf("  loops      %6.2f s  (%.2f ms a keyframe: vocabulary of %zu words %.2f s, "
+              "detection %.2f s, correction %.2f s; %zu loops)\n",
+              t.loops, per_keyframe_ms, loops.vocabulary_words, loops.vocabulary_seconds,
+              loops.detection_seconds, loops.correction_seconds, loops.loops.size());
   std::printf("  global BA  %6.2f s\n", t.global_ba);
   std::printf("  fusion     %6.2f s  (%zu frames -> %zu points)\n", t.fusion, result.fusion.frames,
               result.fusion.after_outlier_removal);
@@ -82,11 +93,27 @@ void report_pipeline(const std::string& name, const TumSequence& sequence, int t
   std::printf("  total      %6.2f s  -> %.1f frames/s, decode to map.ply\n", t.total,
               double(result.frames.size()) / t.total);
   fs::remove_all(out);
+  return t.total;
 }
 
 void report(const std::string& name, const TumSequence& sequence, int threads) {
-  report_front_end(name, sequence, threads);
-  report_pipeline(name, sequence, threads);
+  const double track = report_front_end(name, sequence, threads);
+  const double run = report_pipeline(name, sequence, threads);
+  std::printf("  run / track wall time: %.2fx\n", run / track);
+}
+
+void report_synthetic(synth::Preset preset, const std::string& name, int threads) {
+  const fs::path folder = fs::temp_directory_path() / ("slamkit_benchmark_" + name);
+  synth::SequenceSpec spec;
+  spec.preset = preset;
+  spec.frames = 600;
+  spec.out = folder;
+  Stopwatch watch;
+  synth::write_sequence(synth::make_named_scene(synth::preset_scene(preset)), spec);
+  std::printf("\nrendered synthetic %s (600 frames) in %.1f s\n", name.c_str(),
+              watch.lap() / 1000.0);
+  report("synthetic " + name + " 600", TumSequence::open(folder), threads);
+  fs::remove_all(folder);
 }
 
 }  // namespace
@@ -99,15 +126,7 @@ int main(int argc, char** argv) {
   } else {
     std::printf("SLAMKIT_DATA not set: skipping the real sequence\n");
   }
-  const fs::path synthetic = fs::temp_directory_path() / "slamkit_benchmark_desk600";
-  synth::SequenceSpec spec;
-  spec.preset = synth::Preset::kDesk;
-  spec.frames = 600;
-  spec.out = synthetic;
-  Stopwatch watch;
-  synth::write_sequence(synth::make_furnished_room(), spec);
-  std::printf("\nrendered synthetic desk (600 frames) in %.1f s\n", watch.lap() / 1000.0);
-  report("synthetic desk 600", TumSequence::open(synthetic), threads);
-  fs::remove_all(synthetic);
+  report_synthetic(synth::Preset::kDesk, "desk", threads);
+  report_synthetic(synth::Preset::kLoop, "loop", threads);
   return 0;
 }
