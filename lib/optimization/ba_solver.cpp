@@ -21,9 +21,12 @@ constexpr int kReducedGroup = 1;
 // In a room every keyframe sees most others, so that system is nearly dense anyway. Measured:
 // a local window's costs well under a millisecond, less than SPARSE_SCHUR's symbolic analysis
 // (2.6 against 8-10 ms per Solve); a global BA iteration on synthetic loop 600 (96 keyframes)
-// 0.08 s against 0.19 s by ITERATIVE_SCHUR, desk 600 (187) 0.25 against 0.29 s, but desk 2000
-// (627) 2.6 against 2.1 s, where the dense Schur complement's size (n^2) takes over.
-constexpr int kMaxDenseSchurPoses = 300;
+// 0.08 s against 0.19 s by ITERATIVE_SCHUR, desk 600 (187) 0.25 against 0.29 s. Beyond, the
+// dense factorisation grows as n^3 and conjugate gradients win where the problem is well
+// conditioned: desk 2000 (627 keyframes, one room) 24.4 s against 20.4 s for the whole global
+// BA. Through several rooms they converge slowly: long 2000 (416 keyframes) 9.0 s dense
+// against 39.6 s, same ATE.
+constexpr int kMaxDenseSchurPoses = 500;
 // The scheduled iterations (as ORB-SLAM2's g2o runs them) unless the solve has converged to
 // rounding: Ceres' default relative cost change of 1e-6 ended the whole-map BA after 4 of
 // its 20 iterations with 15% more pose error; 1e-10 stops only where nothing moves any more
