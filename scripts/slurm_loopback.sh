@@ -188,7 +188,11 @@ wait_for 120 "running task 0" task_running
 scancel "${job}_0"
 say "scancel ${job}_0 while it ran"
 queue_empty() { [[ -z "$(squeue -h -j "$1")" ]]; }
+# slurmctld reports job ends to slurmdbd asynchronously: a loaded machine showed an empty queue
+# while sacct still had a task RUNNING. Wait until accounting has every end too.
+accounted() { ! sacct -n -P -X -j "$1" -o State | grep -qE "PENDING|RUNNING|COMPLETING"; }
 wait_for 300 "end of array job $job" queue_empty "$job"
+wait_for 60 "accounting of array job $job" accounted "$job"
 sacct_states="$(sacct -n -P -X -j "$job" -o JobID,State,ExitCode)"
 say "sacct after the first submission:"
 sed 's/^/loopback:   /' <<<"$sacct_states"
@@ -221,6 +225,7 @@ job2="$(sed -n 's/.*submitted array job \([0-9][0-9]*\): 1 tasks (--array=0%2).*
 [[ -n "$job2" ]] || fail "--resubmit-missing did not submit task 0 alone"
 say "task 0 resubmitted as array job $job2"
 wait_for 300 "end of array job $job2" queue_empty "$job2"
+wait_for 60 "accounting of array job $job2" accounted "$job2"
 sacct_states="$(sacct -n -P -X -j "$job,$job2" -o JobID,State,ExitCode)"
 say "sacct after the resubmission:"
 sed 's/^/loopback:   /' <<<"$sacct_states"
