@@ -38,9 +38,11 @@ std::vector<LoopPointMatch> match_loop_neighbourhood(const Map& map, int keyfram
   std::vector<std::pair<int, int>> best(k.keypoints.size(),
                                         {std::numeric_limits<int>::max(), -1});
   std::vector<int> nearby;
+  const Eigen::Isometry3d T_keyframe_w = T_w_keyframe.inverse();
   for (int id : neighbourhood_points(map, candidate)) {
     const MapPoint& p = map.point(id);
-    const auto projection = project_point(map, p, T_w_keyframe, camera, kMinViewCos);
+    const auto projection =
+        project_point(map, p, T_keyframe_w, T_w_keyframe.translation(), camera, kMinViewCos);
     if (!projection) continue;
     grid.within(projection->uv, radius * map.pyramid().scale(projection->octave), nearby);
     int closest = std::numeric_limits<int>::max(), closest_keypoint = -1;

@@ -3,14 +3,15 @@
 namespace slamkit {
 
 std::optional<PointProjection> project_point(const Map& map, const MapPoint& point,
-                                             const Eigen::Isometry3d& T_w_c, const Camera& camera,
+                                             const Eigen::Isometry3d& T_c_w,
+                                             const Eigen::Vector3d& centre, const Camera& camera,
                                              double min_view_cos) {
   PointProjection projection;
-  projection.p_c = T_w_c.inverse() * point.p_w;
+  projection.p_c = T_c_w * point.p_w;
   if (projection.p_c.z() <= 0) return std::nullopt;
   projection.uv = camera.project(projection.p_c);
   if (!camera.contains(projection.uv)) return std::nullopt;
-  const Eigen::Vector3d ray = point.p_w - T_w_c.translation();
+  const Eigen::Vector3d ray = point.p_w - centre;
   const double distance = ray.norm();
   if (distance < 0.8 * point.min_distance || distance > 1.2 * point.max_distance)
     return std::nullopt;

@@ -17,10 +17,13 @@ struct PointProjection {
   int octave = 0;                                 // the level it should be detected at
 };
 
-// The projection of `point` into a camera at T_w_c, or nothing when a gate refuses it.
-// min_view_cos: the cosine of the largest angle to the point's mean viewing direction.
+// The projection of `point` into a camera with pose T_c_w and centre `centre` (world), or
+// nothing when a gate refuses it. Both are the caller's, computed once per view (a keyframe
+// stores them). min_view_cos: the cosine of the largest angle to the point's mean viewing
+// direction.
 std::optional<PointProjection> project_point(const Map& map, const MapPoint& point,
-                                             const Eigen::Isometry3d& T_w_c, const Camera& camera,
+                                             const Eigen::Isometry3d& T_c_w,
+                                             const Eigen::Vector3d& centre, const Camera& camera,
                                              double min_view_cos);
 
 }  // namespace slamkit

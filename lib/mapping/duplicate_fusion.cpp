@@ -20,7 +20,7 @@ std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<in
     if (p.bad || std::any_of(p.observations.begin(), p.observations.end(),
                              [&](const Observation& o) { return o.keyframe == keyframe; }))
       continue;
-    const auto projection = project_point(map, p, k.T_w_c, camera, gates.min_view_cos);
+    const auto projection = project_point(map, p, k.T_c_w, k.centre(), camera, gates.min_view_cos);
     if (!projection) continue;
     const Eigen::Vector2d& uv = projection->uv;
     const int octave = projection->octave;
