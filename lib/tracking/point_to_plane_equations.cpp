@@ -22,7 +22,6 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 struct Association {
   float R[3][3], t[3];
   float fx, fy, cx, cy;  // cx, cy + 0.5: the nearest pixel by truncation
-  int width;             // of the previous surface
   float x0, x1, y0, y1;
   float max_sq, min_cos;
 };
@@ -31,51 +30,66 @@ struct Association {
 // keep zeros: the sums read whole chunks.
 struct Chunk {
   // The current points moved into the previous camera and their normals rotated likewise,
-  // and the previous pixel they project to (-1: none).
+  // and the previous pixel they project to (u = -1: none).
   alignas(16) float p[3][kChunk] = {}, n[3][kChunk] = {};
-  alignas(16) int j[kChunk] = {};
-  // There, the previous point and normal (NaN normal for j = -1: fails the angle test).
+  alignas(16) int u[kChunk] = {}, v[kChunk] = {};
+  // There, the previous point and normal (NaN normal where there is none: fails the angle
+  // test).
   alignas(16) float q[3][kChunk] = {}, N[3][kChunk] = {};
   // Per pair h = (N x p, N), m = (p - q).N and |p|^2; zero without a pair.
   alignas(16) float rows[8][kChunk] = {};
 };
 
-// p' = R p + t, n' = R n and the pixel p' falls in, for pixels [begin, begin + size).
-void move_and_project(const Surface& curr, long begin, int size, const Association& a,
-                      Chunk& c) {
-  const float *x = curr.pixels.col(0).data() + begin, *y = curr.pixels.col(1).data() + begin,
-              *z = curr.pixels.col(2).data() + begin;
-  const float *nx = curr.pixels.col(3).data() + begin, *ny = curr.pixels.col(4).data() + begin,
-              *nz = curr.pixels.col(5).data() + begin;
+// p' = R p + t, n' = R n and the pixel p' falls in, for `size` pixels of `row` from column
+// u0 on, stored from `offset` in the chunk.
+void move_and_project_row(const Surface& curr, int row, int u0, int size, int offset,
+                          const Association& a, Chunk& c) {
+  const long begin = curr.index(u0, row);
+  const float *z = curr.pixels.col(0).data() + begin, *nx = curr.pixels.col(1).data() + begin,
+              *ny = curr.pixels.col(2).data() + begin, *nz = curr.pixels.col(3).data() + begin;
+  const float* xs = curr.x_factors.data() + u0;
+  const float y_factor = curr.y_factors[size_t(row)];
   const auto& R = a.R;
-  const int width = a.width;  // a local: through `a`, GCC 12 does not vectorise the index
 #pragma omp simd
   for (int k = 0; k < size; ++k) {
-    const float px = R[0][0] * x[k] + R[0][1] * y[k] + R[0][2] * z[k] + a.t[0];
-    const float py = R[1][0] * x[k] + R[1][1] * y[k] + R[1][2] * z[k] + a.t[1];
-    const float pz = R[2][0] * x[k] + R[2][1] * y[k] + R[2][2] * z[k] + a.t[2];
-    c.p[0][k] = px, c.p[1][k] = py, c.p[2][k] = pz;
-    c.n[0][k] = R[0][0] * nx[k] + R[0][1] * ny[k] + R[0][2] * nz[k];
-    c.n[1][k] = R[1][0] * nx[k] + R[1][1] * ny[k] + R[1][2] * nz[k];
-    c.n[2][k] = R[2][0] * nx[k] + R[2][1] * ny[k] + R[2][2] * nz[k];
+    const float x = xs[k] * z[k], y = y_factor * z[k];
+    const float px = R[0][0] * x + R[0][1] * y + R[0][2] * z[k] + a.t[0];
+    const float py = R[1][0] * x + R[1][1] * y + R[1][2] * z[k] + a.t[1];
+    const float pz = R[2][0] * x + R[2][1] * y + R[2][2] * z[k] + a.t[2];
+    const int o = offset + k;
+    c.p[0][o] = px, c.p[1][o] = py, c.p[2][o] = pz;
+    c.n[0][o] = R[0][0] * nx[k] + R[0][1] * ny[k] + R[0][2] * nz[k];
+    c.n[1][o] = R[1][0] * nx[k] + R[1][1] * ny[k] + R[1][2] * nz[k];
+    c.n[2][o] = R[2][0] * nx[k] + R[2][1] * ny[k] + R[2][2] * nz[k];
     // A point without depth is NaN and fails every comparison.
     const float u = a.fx * px / pz + a.cx, v = a.fy * py / pz + a.cy;
     const bool inside = (pz > 0) & (u >= a.x0) & (u < a.x1) & (v >= a.y0) & (v < a.y1);
-    // Outside, (u, v) = (-1, 0) gives -1; truncation is the floor for u, v >= 0.
-    c.j[k] = int(inside ? v : 0.0f) * width + int(inside ? u : -1.0f);
+    // Truncation is the floor for u, v >= 0.
+    c.u[o] = int(inside ? u : -1.0f), c.v[o] = int(inside ? v : 0.0f);
+  }
+}
+
+// The same for pixels [begin, begin + size), row by row (a chunk spans at most a few rows).
+void move_and_project(const Surface& curr, long begin, int size, const Association& a,
+                      Chunk& c) {
+  for (int done = 0; done < size;) {
+    const long i = begin + done;
+    const int row = int(i / curr.width), u0 = int(i % curr.width);
+    const int n = std::min(size - done, curr.width - u0);
+    move_and_project_row(curr, row, u0, n, done, a, c);
+    done += n;
   }
 }
 
 // The previous point and normal at each pixel found: a gather, so point by point, by hand.
 void gather(const Surface& prev, int size, Chunk& c) {
-  const float *X = prev.pixels.col(0).data(), *Y = prev.pixels.col(1).data(),
-              *Z = prev.pixels.col(2).data();
-  const float *NX = prev.pixels.col(3).data(), *NY = prev.pixels.col(4).data(),
-              *NZ = prev.pixels.col(5).data();
+  const float *Z = prev.pixels.col(0).data(), *NX = prev.pixels.col(1).data(),
+              *NY = prev.pixels.col(2).data(), *NZ = prev.pixels.col(3).data();
+  const float *xs = prev.x_factors.data(), *ys = prev.y_factors.data();
   for (int k = 0; k < size; ++k) {
-    const bool none = c.j[k] < 0;
-    const int j = none ? 0 : c.j[k];
-    c.q[0][k] = X[j], c.q[1][k] = Y[j], c.q[2][k] = Z[j];
+    const bool none = c.u[k] < 0;
+    const int u = none ? 0 : c.u[k], v = c.v[k], j = prev.index(u, v);
+    c.q[0][k] = xs[u] * Z[j], c.q[1][k] = ys[v] * Z[j], c.q[2][k] = Z[j];
     c.N[0][k] = none ? kNaN : NX[j], c.N[1][k] = NY[j], c.N[2][k] = NZ[j];
   }
 }
@@ -168,7 +182,6 @@ PointToPlaneEquations point_to_plane_equations(const Surface& prev, const Surfac
   const Camera& cam = prev.camera;
   a.fx = float(cam.fx), a.fy = float(cam.fy);
   a.cx = float(cam.cx + 0.5), a.cy = float(cam.cy + 0.5);
-  a.width = prev.width;
   a.x0 = float(box.x), a.x1 = float(box.x + box.width);
   a.y0 = float(box.y), a.y1 = float(box.y + box.height);
   a.max_sq = float(settings.max_pair_distance * settings.max_pair_distance);

@@ -29,17 +29,15 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
   s.camera = cam;
   s.width = depth.cols, s.height = depth.rows;
   const int w = s.width, h = s.height;
-  s.pixels.resize(long(w) * h, 6);
-  float* X = s.pixels.col(0).data();
-  float* Y = s.pixels.col(1).data();
-  float* Z = s.pixels.col(2).data();
-  float* NX = s.pixels.col(3).data();
-  float* NY = s.pixels.col(4).data();
-  float* NZ = s.pixels.col(5).data();
-  const std::vector<float> x_factors = ray_factors(w, cam.cx, cam.fx);
-  const std::vector<float> y_factors = ray_factors(h, cam.cy, cam.fy);
-  const float* xs = x_factors.data();
-  const float* ys = y_factors.data();
+  s.pixels.resize(long(w) * h, 4);
+  float* Z = s.pixels.col(0).data();
+  float* NX = s.pixels.col(1).data();
+  float* NY = s.pixels.col(2).data();
+  float* NZ = s.pixels.col(3).data();
+  s.x_factors = ray_factors(w, cam.cx, cam.fx);
+  s.y_factors = ray_factors(h, cam.cy, cam.fy);
+  const float* xs = s.x_factors.data();
+  const float* ys = s.y_factors.data();
   // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does.
   // The residual itself still uses the measured points.
   cv::Mat source;  // the depth the normals are taken from; NaN where no measurement is valid
@@ -55,13 +53,10 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
   for (int v = 0; v < h; ++v) {
     const float* z = depth.ptr<float>(v);
     float* src = source.ptr<float>(v);
-    const size_t row = size_t(v) * size_t(w);
-    float *x = X + row, *y = Y + row, *zv = Z + row;
+    float* zv = Z + size_t(v) * size_t(w);
 #pragma omp simd
     for (int u = 0; u < w; ++u) {
       const float none = (z[u] >= min_depth) & (z[u] <= max_depth) ? 0.0f : kNaN;
-      x[u] = xs[u] * z[u] + none;
-      y[u] = ys[v] * z[u] + none;
       zv[u] = z[u] + none;
       src[u] += none;
     }
