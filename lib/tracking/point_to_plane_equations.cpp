@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "tracking/dot_sums.h"
+
 namespace slamkit {
 namespace {
 
@@ -36,8 +38,8 @@ struct Chunk {
   // There, the previous point and normal (NaN normal where there is none: fails the angle
   // test).
   alignas(16) float q[3][kChunk] = {}, N[3][kChunk] = {};
-  // Per pair h = (N x p, N), m = (p - q).N and |p|^2; zero without a pair.
-  alignas(16) float rows[8][kChunk] = {};
+  // Per pair h = (N x p, N), m = (p - q).N and |p|^2, zero without a pair; then ones.
+  alignas(16) float rows[9][kChunk] = {};
 };
 
 // p' = R p + t, n' = R n and the pixel p' falls in, for `size` pixels of `row` from column
@@ -121,49 +123,54 @@ int linearise(const Association& a, int size, Chunk& c) {
   return pairs;
 }
 
-// The sum of term(k) over a chunk, in four independent partial sums (the adds' latency, not
-// their number, bounds a single one).
-template <class Term>
-float chunk_sum(const Term& term) {
-  constexpr int q = kChunk / 4;
-  float s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-#pragma omp simd reduction(+ : s0, s1, s2, s3)
-  for (int k = 0; k < q; ++k) {
-    s0 += term(k);
-    s1 += term(k + q);
-    s2 += term(k + 2 * q);
-    s3 += term(k + 3 * q);
-  }
-  return (s0 + s1) + (s2 + s3);
-}
-
-// One block's sums: the Gram matrix of (h, m), sum |p|^2 and the pairs. Each chunk's float
-// sums go to double before they are added up.
+// One block's sums: the Gram matrix of (h, m), sum |p|^2 and the pairs.
 struct BlockSums {
   Eigen::Matrix<double, 7, 7> gram = Eigen::Matrix<double, 7, 7>::Zero();
   double sum_p2 = 0;
   int count = 0;
 };
 
+// The sums a block needs, as rows of a chunk: the Gram matrix's lower triangle (i, k), then
+// sum |p|^2 as row 7 times ones.
+constexpr int kSums = 29;
+struct SumTerms {
+  int i[kSums], k[kSums];
+};
+constexpr SumTerms sum_terms() {
+  SumTerms t{};
+  int s = 0;
+  for (int i = 0; i < 7; ++i)
+    for (int k = 0; k <= i; ++k) t.i[s] = i, t.k[s] = k, ++s;
+  t.i[s] = 7, t.k[s] = 8;  // row 8: ones
+  return t;
+}
+
 BlockSums block_sums(const Surface& prev, const Surface& curr, long begin, long size,
                      const Association& a) {
-  BlockSums sums;
+  constexpr SumTerms terms = sum_terms();
   Chunk c;
-  for (long offset = 0; offset < size; offset += kChunk) {
-    const int n = int(std::min<long>(kChunk, size - offset));
+  std::fill_n(c.rows[8], kChunk, 1.0f);
+  const float *left[kSums], *right[kSums];
+  for (int s = 0; s < kSums; ++s) left[s] = c.rows[terms.i[s]], right[s] = c.rows[terms.k[s]];
+  DotSum dots[kSums];
+  BlockSums sums;
+  int n = 0;
+  for (long offset = 0; offset < size; offset += n) {
+    n = int(std::min<long>(kChunk, size - offset));
     move_and_project(curr, begin + offset, n, a, c);
     gather(prev, n, c);
     sums.count += linearise(a, n, c);
-    for (int i = 0; i < 7; ++i) {
-      const float* row_i = c.rows[i];
-      for (int k = 0; k <= i; ++k) {
-        const float* row_k = c.rows[k];
-        sums.gram(i, k) += double(chunk_sum([&](int l) { return row_i[l] * row_k[l]; }));
-      }
-    }
-    const float* p2 = c.rows[7];
-    sums.sum_p2 += double(chunk_sum([&](int l) { return p2[l]; }));
+    int s = 0;
+    for (; s + 4 <= kSums; s += 4) add_groups4(dots + s, left + s, right + s, n / 8);
+    for (; s < kSums; ++s) dots[s].add_groups(left[s], right[s], n / 8);
   }
+  // Only the last chunk may end with a part of a group: its elements finish the sums.
+  const int last = 8 * (n / 8);
+  for (int s = 0; s < kSums - 1; ++s)
+    sums.gram(terms.i[s], terms.k[s]) =
+        double(dots[s].finish(left[s] + last, right[s] + last, n - last));
+  sums.sum_p2 = double(dots[kSums - 1].finish(left[kSums - 1] + last, right[kSums - 1] + last,
+                                              n - last));
   return sums;
 }
 
