@@ -43,8 +43,7 @@ class DotSum {
 };
 
 // Four sums at once, for their independent chains of additions: add_groups of each.
-inline void add_groups4(DotSum* sums, const float* const* a, const float* const* b,
-                        int groups) {
+inline void add_groups4(DotSum* sums, const float* const* a, const float* const* b, int groups) {
   DotSum local[4] = {sums[0], sums[1], sums[2], sums[3]};  // in registers, not memory
   for (int g = 0; g < groups; ++g)
     for (int d = 0; d < 4; ++d) local[d].add_groups(a[d] + 8 * g, b[d] + 8 * g, 1);

@@ -72,8 +72,7 @@ void move_and_project_row(const Surface& curr, int row, int u0, int size, int of
 }
 
 // The same for pixels [begin, begin + size), row by row (a chunk spans at most a few rows).
-void move_and_project(const Surface& curr, long begin, int size, const Association& a,
-                      Chunk& c) {
+void move_and_project(const Surface& curr, long begin, int size, const Association& a, Chunk& c) {
   for (int done = 0; done < size;) {
     const long i = begin + done;
     const int row = int(i / curr.width), u0 = int(i % curr.width);
@@ -102,12 +101,10 @@ int linearise(const Association& a, int size, Chunk& c) {
   int pairs = 0;
 #pragma omp simd reduction(+ : pairs)
   for (int k = 0; k < kChunk; ++k) {
-    const float dx = c.p[0][k] - c.q[0][k], dy = c.p[1][k] - c.q[1][k],
-                dz = c.p[2][k] - c.q[2][k];
-    const bool paired = (k < size) & (dx * dx + dy * dy + dz * dz <= a.max_sq) &
-                        (c.n[0][k] * c.N[0][k] + c.n[1][k] * c.N[1][k] +
-                             c.n[2][k] * c.N[2][k] >=
-                         a.min_cos);
+    const float dx = c.p[0][k] - c.q[0][k], dy = c.p[1][k] - c.q[1][k], dz = c.p[2][k] - c.q[2][k];
+    const bool paired =
+        (k < size) & (dx * dx + dy * dy + dz * dz <= a.max_sq) &
+        (c.n[0][k] * c.N[0][k] + c.n[1][k] * c.N[1][k] + c.n[2][k] * c.N[2][k] >= a.min_cos);
     const float px = paired ? c.p[0][k] : 0.0f, py = paired ? c.p[1][k] : 0.0f,
                 pz = paired ? c.p[2][k] : 0.0f;
     const float Nx = paired ? c.N[0][k] : 0.0f, Ny = paired ? c.N[1][k] : 0.0f,
@@ -169,8 +166,8 @@ BlockSums block_sums(const Surface& prev, const Surface& curr, long begin, long 
   for (int s = 0; s < kSums - 1; ++s)
     sums.gram(terms.i[s], terms.k[s]) =
         double(dots[s].finish(left[s] + last, right[s] + last, n - last));
-  sums.sum_p2 = double(dots[kSums - 1].finish(left[kSums - 1] + last, right[kSums - 1] + last,
-                                              n - last));
+  sums.sum_p2 =
+      double(dots[kSums - 1].finish(left[kSums - 1] + last, right[kSums - 1] + last, n - last));
   return sums;
 }
 

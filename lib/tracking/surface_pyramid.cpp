@@ -78,7 +78,7 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
       continue;
     }
     nx[w - 1] = ny[w - 1] = nz[w - 1] = kNaN;  // no right neighbour
-    if (back) nx[0] = ny[0] = nz[0] = kNaN;     // no left one
+    if (back) nx[0] = ny[0] = nz[0] = kNaN;    // no left one
     const float* zc = source.ptr<float>(v);
     const float* zu = zc - back * w;  // row v - back
     const float* zd = zc + w;         // row v + 1
