@@ -28,18 +28,18 @@ struct Association {
   float max_sq, min_cos;
 };
 
-// One chunk's columns, each pass a plain loop over them. Pixels past the end of the block
-// keep zeros: the sums read whole chunks.
+// One chunk's columns, each pass a plain loop over them (over the chunk's first n pixels:
+// the block's last chunk may be shorter).
 struct Chunk {
   // The current points moved into the previous camera and their normals rotated likewise,
   // and the previous pixel they project to (u = -1: none).
-  alignas(16) float p[3][kChunk] = {}, n[3][kChunk] = {};
-  alignas(16) int u[kChunk] = {}, v[kChunk] = {};
+  alignas(16) float p[3][kChunk], n[3][kChunk];
+  alignas(16) int u[kChunk], v[kChunk];
   // There, the previous point and normal (NaN normal where there is none: fails the angle
   // test).
-  alignas(16) float q[3][kChunk] = {}, N[3][kChunk] = {};
+  alignas(16) float q[3][kChunk], N[3][kChunk];
   // Per pair h = (N x p, N), m = (p - q).N and |p|^2, zero without a pair; then ones.
-  alignas(16) float rows[9][kChunk] = {};
+  alignas(16) float rows[9][kChunk];
 };
 
 // p' = R p + t, n' = R n and the pixel p' falls in, for `size` pixels of `row` from column
@@ -100,10 +100,10 @@ void gather(const Surface& prev, int size, Chunk& c) {
 int linearise(const Association& a, int size, Chunk& c) {
   int pairs = 0;
 #pragma omp simd reduction(+ : pairs)
-  for (int k = 0; k < kChunk; ++k) {
+  for (int k = 0; k < size; ++k) {
     const float dx = c.p[0][k] - c.q[0][k], dy = c.p[1][k] - c.q[1][k], dz = c.p[2][k] - c.q[2][k];
     const bool paired =
-        (k < size) & (dx * dx + dy * dy + dz * dz <= a.max_sq) &
+        (dx * dx + dy * dy + dz * dz <= a.max_sq) &
         (c.n[0][k] * c.N[0][k] + c.n[1][k] * c.N[1][k] + c.n[2][k] * c.N[2][k] >= a.min_cos);
     const float px = paired ? c.p[0][k] : 0.0f, py = paired ? c.p[1][k] : 0.0f,
                 pz = paired ? c.p[2][k] : 0.0f;
