@@ -1,5 +1,6 @@
 #include "tracking/surface_pyramid.h"
 
+#include <algorithm>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
@@ -28,44 +29,36 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
   s.camera = cam;
   s.width = depth.cols, s.height = depth.rows;
   const int w = s.width, h = s.height;
-  s.pixels.resize(long(w) * h, 6);
-  float* X = s.pixels.col(0).data();
-  float* Y = s.pixels.col(1).data();
-  float* Z = s.pixels.col(2).data();
-  float* NX = s.pixels.col(3).data();
-  float* NY = s.pixels.col(4).data();
-  float* NZ = s.pixels.col(5).data();
-  const std::vector<float> x_factors = ray_factors(w, cam.cx, cam.fx);
-  const std::vector<float> y_factors = ray_factors(h, cam.cy, cam.fy);
-  const float* xs = x_factors.data();
-  const float* ys = y_factors.data();
+  s.pixels.resize(long(w) * h, 4);
+  float* Z = s.pixels.col(0).data();
+  float* NX = s.pixels.col(1).data();
+  float* NY = s.pixels.col(2).data();
+  float* NZ = s.pixels.col(3).data();
+  s.x_factors = ray_factors(w, cam.cx, cam.fx);
+  s.y_factors = ray_factors(h, cam.cy, cam.fy);
+  const float* xs = s.x_factors.data();
+  const float* ys = s.y_factors.data();
   // (beyond) Normals from an edge-preserving smoothed depth, as KinectFusion does.
   // The residual itself still uses the measured points.
-  cv::Mat smoothed;
+  cv::Mat source;  // the depth the normals are taken from; NaN where no measurement is valid
   if (settings.normal_smoothing_diameter > 0)
-    cv::bilateralFilter(depth, smoothed, settings.normal_smoothing_diameter,
+    cv::bilateralFilter(depth, source, settings.normal_smoothing_diameter,
                         settings.normal_smoothing_sigma_depth,
                         settings.normal_smoothing_diameter / 2.0);
   else
-    smoothed = depth;
-  // The depth the normals are taken from: smoothed, NaN where the measurement is not valid.
-  std::vector<float> source(size_t(w) * size_t(h));
+    source = depth.clone();
+  CV_Assert(source.isContinuous());  // rows v - 1 and v + 1 are read at -w and +w
   const float min_depth = float(cam.min_depth), max_depth = float(cam.max_depth);
 #pragma omp parallel for schedule(static)
   for (int v = 0; v < h; ++v) {
     const float* z = depth.ptr<float>(v);
-    const float* zs = smoothed.ptr<float>(v);
-    const size_t row = size_t(v) * size_t(w);
-    float *x = X + row, *y = Y + row, *zv = Z + row, *src = source.data() + row;
-    float *nx = NX + row, *ny = NY + row, *nz = NZ + row;
+    float* src = source.ptr<float>(v);
+    float* zv = Z + size_t(v) * size_t(w);
 #pragma omp simd
     for (int u = 0; u < w; ++u) {
       const float none = (z[u] >= min_depth) & (z[u] <= max_depth) ? 0.0f : kNaN;
-      x[u] = xs[u] * z[u] + none;
-      y[u] = ys[v] * z[u] + none;
       zv[u] = z[u] + none;
-      src[u] = zs[u] + none;
-      nx[u] = ny[u] = nz[u] = kNaN;  // the normal pass fills those it can
+      src[u] += none;
     }
   }
   // SPEC: N = (q(u+1,v) - q(u,v)) x (q(u,v+1) - q(u,v)), normalised. (beyond) Central
@@ -73,16 +66,23 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
   // differences the two are correlated, which on noisy smoothed depth biases each frame's
   // rotation the same way (measured by a test: 0.030 deg a frame, central 0.005 deg).
   // Neighbours across a depth edge would give the normal of a surface that is not there.
+  // The pixels without the neighbours (the border) have no normal.
   const float max_depth_ratio = float(settings.max_neighbour_depth_ratio);
   const int back = settings.central_difference_normals ? 1 : 0;
 #pragma omp parallel for schedule(static)
-  for (int v = back; v < h - 1; ++v) {
-    const float* zc = source.data() + size_t(v) * size_t(w);
+  for (int v = 0; v < h; ++v) {
+    const size_t row = size_t(v) * size_t(w);
+    float *nx = NX + row, *ny = NY + row, *nz = NZ + row;
+    if (v < back || v == h - 1) {
+      std::fill_n(nx, w, kNaN), std::fill_n(ny, w, kNaN), std::fill_n(nz, w, kNaN);
+      continue;
+    }
+    nx[w - 1] = ny[w - 1] = nz[w - 1] = kNaN;  // no right neighbour
+    if (back) nx[0] = ny[0] = nz[0] = kNaN;    // no left one
+    const float* zc = source.ptr<float>(v);
     const float* zu = zc - back * w;  // row v - back
     const float* zd = zc + w;         // row v + 1
     const float yc = ys[v], yu = ys[v - back], yd = ys[v + 1];
-    const size_t row = size_t(v) * size_t(w);
-    float *nx = NX + row, *ny = NY + row, *nz = NZ + row;
 #pragma omp simd
     for (int u = back; u < w - 1; ++u) {
       const float z = zc[u], zl = zc[u - back], zr = zc[u + 1];

@@ -4,7 +4,8 @@
 // `lowtexture` sequence (32% to 72% of its frames), the guess is the previous groundtruth
 // motion (a constant-velocity model). Prints milliseconds per frame, wall and process CPU
 // (CPU is what a shared machine does not inflate; with 2 threads it includes OpenMP's spin
-// waits), at 1 and 2 threads, and the error of the relative motion against groundtruth.
+// waits), the mean CPU split into building the surfaces and aligning, at 1 and 2 threads,
+// and the error of the relative motion against groundtruth.
 //   build/tests/benchmark/slamkit_dense_benchmark [SEQUENCE]   (default: renders lowtexture 600)
 #include <omp.h>
 
@@ -62,7 +63,7 @@ void report(const TumSequence& seq, int threads) {
   omp_set_num_threads(threads);
   const PointToPlaneSettings settings = Settings{}.tracking.point_to_plane;
   const size_t first = size_t(0.32 * double(seq.size())), last = size_t(0.72 * double(seq.size()));
-  std::vector<double> wall, cpu, err_mm;
+  std::vector<double> wall, cpu, surfaces_cpu, err_mm;
   int iterations = 0;
   SurfacePyramid prev = make_surface_pyramid(seq.load(first).depth, seq.camera(), settings);
   Eigen::Isometry3d T_prev_curr_guess = truth(seq, first - 1).inverse() * truth(seq, first);
@@ -70,6 +71,7 @@ void report(const TumSequence& seq, int threads) {
     const cv::Mat depth = seq.load(i).depth;
     const double w0 = wall_ms(), c0 = cpu_ms();
     SurfacePyramid curr = make_surface_pyramid(depth, seq.camera(), settings);
+    surfaces_cpu.push_back(cpu_ms() - c0);
     const DenseAlignment a = point_to_plane(prev, curr, T_prev_curr_guess, cv::Rect(), settings);
     wall.push_back(wall_ms() - w0);
     cpu.push_back(cpu_ms() - c0);
@@ -81,9 +83,10 @@ void report(const TumSequence& seq, int threads) {
   }
   std::printf(
       "%d thread(s), %zu frames: wall median %.2f mean %.2f ms; CPU median %.2f mean "
-      "%.2f ms; %.2f iterations a frame; relative motion error median %.3f mm\n",
-      threads, wall.size(), median(wall), mean(wall), median(cpu), mean(cpu),
-      double(iterations) / double(wall.size()), median(err_mm));
+      "%.2f ms (surfaces %.2f, alignment %.2f); %.2f iterations a frame; relative motion error "
+      "median %.3f mm\n",
+      threads, wall.size(), median(wall), mean(wall), median(cpu), mean(cpu), mean(surfaces_cpu),
+      mean(cpu) - mean(surfaces_cpu), double(iterations) / double(wall.size()), median(err_mm));
 }
 
 }  // namespace

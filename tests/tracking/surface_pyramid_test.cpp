@@ -18,7 +18,7 @@ cv::Mat plane_depth(const Camera& cam, const Eigen::Vector3d& n, double d) {
 }
 
 Eigen::Vector3d normal_at(const Surface& s, int u, int v) {
-  return s.pixels.row(s.index(u, v)).tail<3>().transpose().cast<double>();
+  return s.normal(s.index(u, v)).cast<double>();
 }
 
 TEST(SurfacePyramid, TiltedPlaneHasItsPointsAndNormalOnEveryLevel) {
@@ -37,8 +37,8 @@ TEST(SurfacePyramid, TiltedPlaneHasItsPointsAndNormalOnEveryLevel) {
     for (int i = 0; i < int(s.pixels.rows()); ++i) {
       if (!s.has_normal(i)) continue;
       ++with_normal;
-      const Eigen::Vector3d p = s.pixels.row(i).head<3>().transpose().cast<double>();
-      const Eigen::Vector3d normal = s.pixels.row(i).tail<3>().transpose().cast<double>();
+      const Eigen::Vector3d p = s.point(i).cast<double>();
+      const Eigen::Vector3d normal = s.normal(i).cast<double>();
       normal_error = std::max(normal_error, 1 - std::abs(normal.dot(n)));
       plane_distance = std::max(plane_distance, std::abs(n.dot(p) - 2.0));
     }
@@ -63,7 +63,7 @@ TEST(SurfacePyramid, NoNormalAcrossADepthEdgeOrAHole) {
   EXPECT_FALSE(s.has_normal(s.index(319, 240)));
   EXPECT_FALSE(s.has_normal(s.index(320, 240)));
   EXPECT_TRUE(s.has_normal(s.index(318, 240)));
-  EXPECT_TRUE(std::isnan(s.pixels(s.index(100, 100), 2)));  // no measurement, no point
+  EXPECT_TRUE(std::isnan(s.point(s.index(100, 100)).z()));  // no measurement, no point
   EXPECT_FALSE(s.has_normal(s.index(101, 100)));            // its neighbour misses one
   EXPECT_FALSE(s.has_normal(s.index(0, 240)));              // the border has no left neighbour
 }
