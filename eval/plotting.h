@@ -2,7 +2,8 @@
 // Plots are drawn by eval/plot.py from the data files the C++ side wrote (metrics.json, the
 // CSVs), so metrics cost nothing when plots are off. One Python process draws every figure a
 // command asks for: starting Python and importing matplotlib costs about 0.4 s before any
-// figure is drawn, which one process per figure paid again and again.
+// figure is drawn, which one process per figure paid again and again. plot.py then forks a
+// child per figure, so the figures are drawn on every core with the imports paid once.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
