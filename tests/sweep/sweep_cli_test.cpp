@@ -120,5 +120,32 @@ TEST(SweepCli, BadInputExitsTwoNamingFileAndLine) {
   EXPECT_EQ(test::run_slamkit("sweep task " + (dir / "nowhere").string() + " 0", &output), 2);
 }
 
+// The sweeps shipped in results/ stay valid as settings and suites change: each plans (no
+// run) with its documented number of jobs.
+TEST(SweepCli, ShippedSweepsPlan) {
+  const fs::path dir = test::temp_dir("sweep_shipped");
+  const fs::path results = fs::path(SLAMKIT_SOURCE_DIR) / "results";
+  const std::map<std::string, std::string> expected = {
+      {"sweep-orb-features.yaml",
+       "orb-features: 4 entries x 3 variants x the suite's seeds = 12 jobs"},
+      {"sweep-dense-seeds.yaml", "dense-seeds: 2 entries x 2 variants x 3 seeds (1, 2, 3) = 12 jobs"},
+  };
+  int found = 0;
+  for (const auto& entry : fs::directory_iterator(results)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("sweep-", 0) != 0) continue;
+    ++found;
+    ASSERT_TRUE(expected.count(name)) << name << " has no expected plan here";
+    std::string output;
+    ASSERT_EQ(test::run_slamkit("sweep plan " + entry.path().string() + " --out " +
+                                    (dir / name).string(),
+                                &output),
+              0)
+        << output;
+    EXPECT_NE(output.find(expected.at(name)), std::string::npos) << output;
+  }
+  EXPECT_EQ(found, int(expected.size()));
+}
+
 }  // namespace
 }  // namespace slamkit
