@@ -1,7 +1,7 @@
 // `slamkit sweep` end to end on this machine: tests/sweep/tiny.yaml (one 40-frame synthetic
-// sequence, 2 ORB feature counts x 2 seeds) planned, run with --backend local --jobs 2, followed with
-// status, collected into the report, resumed, a lost run reported as missing (collect exits
-// 1) and run again by `sweep task` with the same numbers; bad input exits 2 naming the line.
+// sequence, 2 ORB feature counts x 2 seeds) planned, run with --backend local --jobs 2, followed
+// with status, collected into the report, resumed, a lost run reported as missing (collect exits 1)
+// and run again by `sweep task` with the same numbers; bad input exits 2 naming the line.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -34,7 +34,6 @@ std::map<int, std::map<std::string, std::string>> read_runs_csv(const fs::path& 
   }
   return rows;
 }
-
 
 TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
   const fs::path dir = test::temp_dir("sweep_cli");
@@ -128,7 +127,8 @@ TEST(SweepCli, ShippedSweepsPlan) {
   const std::map<std::string, std::string> expected = {
       {"sweep-orb-features.yaml",
        "orb-features: 4 entries x 3 variants x the suite's seeds = 12 jobs"},
-      {"sweep-dense-seeds.yaml", "dense-seeds: 2 entries x 2 variants x 3 seeds (1, 2, 3) = 12 jobs"},
+      {"sweep-dense-seeds.yaml",
+       "dense-seeds: 2 entries x 2 variants x 3 seeds (1, 2, 3) = 12 jobs"},
   };
   int found = 0;
   for (const auto& entry : fs::directory_iterator(results)) {
@@ -137,10 +137,10 @@ TEST(SweepCli, ShippedSweepsPlan) {
     ++found;
     ASSERT_TRUE(expected.count(name)) << name << " has no expected plan here";
     std::string output;
-    ASSERT_EQ(test::run_slamkit("sweep plan " + entry.path().string() + " --out " +
-                                    (dir / name).string(),
-                                &output),
-              0)
+    ASSERT_EQ(
+        test::run_slamkit("sweep plan " + entry.path().string() + " --out " + (dir / name).string(),
+                          &output),
+        0)
         << output;
     EXPECT_NE(output.find(expected.at(name)), std::string::npos) << output;
   }
