@@ -40,20 +40,21 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
     removed += r.ba.removed_observations;
   }
   const StageTimes& t = result.seconds;
-  std::printf("map         %zu keyframes, %d points\n", result.map.keyframes().size(),
-              result.map.num_good_points());
+  const int culled = result.map.num_culled_keyframes();
+  std::printf("map         %zu keyframes (%d redundant ones culled), %d points\n",
+              result.map.keyframes().size() - size_t(culled), culled, result.map.num_good_points());
   std::printf("local BA    %d of %zu keyframes, %d outlier observations removed, %.2f s\n",
               local_runs, result.keyframe_reports.size(), removed, t.local_ba);
   const LoopPassReport& lp = result.loop_pass;
   if (lp.ran) {
     int verified = 0;
     for (const LoopDecision& d : lp.decisions) verified += d.verified;
-    std::printf("loops       %zu accepted of %d candidates verified (%zu judged, loops.csv); "
-                "%d points fused; %.2f s (vocabulary of %zu words %.2f, detection %.2f, "
-                "correction %.2f)\n",
-                lp.loops.size(), verified, lp.decisions.size(), lp.fused_points, t.loops,
-                lp.vocabulary_words, lp.vocabulary_seconds, lp.detection_seconds,
-                lp.correction_seconds);
+    std::printf(
+        "loops       %zu accepted of %d candidates verified (%zu judged, loops.csv); "
+        "%d points fused; %.2f s (vocabulary of %zu words %.2f, detection %.2f, "
+        "correction %.2f)\n",
+        lp.loops.size(), verified, lp.decisions.size(), lp.fused_points, t.loops,
+        lp.vocabulary_words, lp.vocabulary_seconds, lp.detection_seconds, lp.correction_seconds);
   }
   if (result.global_ba_run)
     std::printf("global BA   %d keyframes, %d points, %d iterations, %d outliers removed, %.2f s\n",
@@ -108,9 +109,8 @@ void run(const RunArgs& args) {
     RunResult result;
     {
       StageProgress progress;
-      result =
-          run_batch(seq, settings, args.out, seq.folder().filename().string(), std::ref(progress),
-                    vocabulary ? &*vocabulary : nullptr);
+      result = run_batch(seq, settings, args.out, seq.folder().filename().string(),
+                         std::ref(progress), vocabulary ? &*vocabulary : nullptr);
     }
     print_tracking_summary(seq, result);
     print_back_end_summary(seq, settings, result);

@@ -131,6 +131,10 @@ void visit_fields(MappingSettings& s, V& v) {
   v.field("fuse_radius", s.fuse_radius, at_least(0));
   v.field("fuse_max_distance", s.fuse_max_distance, {0, 256});
   v.field("min_view_cos", s.min_view_cos, {-1, 1});
+  v.field("cull_keyframes", s.cull_keyframes);
+  v.field("culling_redundancy", s.culling_redundancy, {0, 1});
+  v.field("culling_observers", s.culling_observers, {1, 1000});
+  v.field("culling_max_depth", s.culling_max_depth, {0, 1000});
 }
 
 template <class V>

@@ -30,8 +30,9 @@ class LoopDetector {
     // Every keyframe in words, once (independent: parallel, same result at any thread count).
 #pragma omp parallel for schedule(dynamic, 4)
     for (long k = 0; k < long(bows_.size()); ++k)
-      bows_[size_t(k)] = vocabulary.transform(map.keyframe(int(k)).descriptors,
-                                              settings.vocabulary.direct_index_level);
+      if (!map.keyframe(int(k)).culled)
+        bows_[size_t(k)] = vocabulary.transform(map.keyframe(int(k)).descriptors,
+                                                settings.vocabulary.direct_index_level);
   }
 
   // The decisions on keyframe k's candidates among the keyframes indexed so far; then k is
@@ -122,7 +123,8 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
   Vocabulary trained;
   if (!vocabulary) {
     std::vector<cv::Mat> images;
-    for (const Keyframe& k : map.keyframes()) images.push_back(k.descriptors);
+    for (const Keyframe& k : map.keyframes())
+      if (!k.culled) images.push_back(k.descriptors);
     trained = train_vocabulary(images, settings.vocabulary);
     vocabulary = &trained;
   }
@@ -130,8 +132,10 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
   report.vocabulary_seconds = watch.lap() / 1000.0;
 
   LoopDetector detector(map, camera, settings, *vocabulary);
-  for (int k = 0; k < report.keyframes; ++k)
+  for (int k = 0; k < report.keyframes; ++k) {
+    if (map.keyframe(k).culled) continue;  // redundant: its neighbours stand for it
     if (const auto loop = detector.detect(k, report.decisions)) report.loops.push_back(*loop);
+  }
   report.detection_seconds = watch.lap() / 1000.0;
 
   double largest_gap = 0;

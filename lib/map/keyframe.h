@@ -29,6 +29,10 @@ struct Keyframe {
   std::vector<int> covisible;
   int parent = -1;  // spanning tree: the best neighbour at insertion (-1 for the first)
   std::vector<int> children;
+  // Culled as redundant (Map::cull_keyframe): no observations, links or children any more; it
+  // follows its parent at T_parent_c, its pose relative to the parent when it was culled.
+  bool culled = false;
+  Eigen::Isometry3d T_parent_c = Eigen::Isometry3d::Identity();
 
   void set_pose(const Eigen::Isometry3d& T_world_camera) {
     T_w_c = T_world_camera;

@@ -120,6 +120,58 @@ void Map::update_connections(int keyframe) {
   }
 }
 
+void Map::cull_keyframe(int keyframe) {
+  Keyframe& k = keyframes_[size_t(keyframe)];
+  if (k.culled || k.parent < 0) return;  // the first keyframe holds the world frame
+  for (int point : std::vector<int>(k.point_ids))
+    if (point >= 0) erase_observation(point, keyframe);
+  for (const auto& [other, weight] : k.shared_points) {
+    keyframes_[size_t(other)].shared_points.erase(keyframe);
+    sort_covisible(other);
+  }
+  k.shared_points.clear();
+  k.covisible.clear();
+
+  // ORB-SLAM2's re-parenting: repeatedly the (child, candidate) pair of largest covisibility
+  // weight, the child then becoming a candidate too.
+  std::vector<int> candidates = {k.parent};
+  std::vector<int> orphans = k.children;
+  while (!orphans.empty()) {
+    int best_child = -1, best_parent = -1, best_weight = -1;
+    for (int child : orphans)
+      for (int candidate : candidates) {
+        const auto& shared = keyframes_[size_t(child)].shared_points;
+        const auto it = shared.find(candidate);
+        if (candidate < child && it != shared.end() && it->second > best_weight)
+          best_child = child, best_parent = candidate, best_weight = it->second;
+      }
+    if (best_child < 0) break;
+    keyframes_[size_t(best_child)].parent = best_parent;
+    keyframes_[size_t(best_parent)].children.push_back(best_child);
+    candidates.push_back(best_child);
+    orphans.erase(std::find(orphans.begin(), orphans.end(), best_child));
+  }
+  for (int child : orphans) {
+    keyframes_[size_t(child)].parent = k.parent;
+    keyframes_[size_t(k.parent)].children.push_back(child);
+  }
+  k.children.clear();
+  std::vector<int>& siblings = keyframes_[size_t(k.parent)].children;
+  siblings.erase(std::remove(siblings.begin(), siblings.end(), keyframe), siblings.end());
+  k.T_parent_c = keyframes_[size_t(k.parent)].T_c_w * k.T_w_c;
+  k.culled = true;
+}
+
+void Map::place_culled_keyframes() {
+  for (Keyframe& k : keyframes_)  // a parent is older than its child: placed first
+    if (k.culled) k.set_pose(keyframes_[size_t(k.parent)].T_w_c * k.T_parent_c);
+}
+
+int Map::num_culled_keyframes() const {
+  return int(std::count_if(keyframes_.begin(), keyframes_.end(),
+                           [](const Keyframe& k) { return k.culled; }));
+}
+
 void Map::link(int keyframe, int other, int weight) {
   // Moves `other` within the sorted neighbour list instead of sorting it again: in a room every
   // keyframe neighbours hundreds of others, and each new keyframe updates all of them.
@@ -165,9 +217,8 @@ void Map::update_point_descriptor(int point) {
   // The choice costs the square of the views compared: over a room filmed for minutes a point
   // gathers hundreds of views (ORB-SLAM2 culls redundant keyframes; we keep them), so only the
   // most recent kDescriptorViews take part.
-  const size_t first = p.observations.size() > kDescriptorViews
-                           ? p.observations.size() - kDescriptorViews
-                           : 0;
+  const size_t first =
+      p.observations.size() > kDescriptorViews ? p.observations.size() - kDescriptorViews : 0;
   const size_t n = p.observations.size() - first;
   std::vector<const uchar*> descriptors;
   for (size_t i = first; i < p.observations.size(); ++i) {

@@ -40,6 +40,17 @@ class Map {
   // already seen by that keyframe), its counters add, and it is marked bad.
   void replace_point(int duplicate, int survivor);
 
+  // Removes a redundant keyframe (ORB-SLAM2's SetBadFlag): its observations and covisibility
+  // links go, and each child takes as parent the most covisible of the culled keyframe's parent
+  // and the children re-parented so far, among those older than it (parents stay older than
+  // their children); a child linked to none of them takes the culled keyframe's parent. The
+  // culled keyframe keeps its index and its parent, at its present relative pose.
+  void cull_keyframe(int keyframe);
+  // Puts every culled keyframe at its parent's pose times T_parent_c, oldest first (after
+  // its parent moved, e.g. in global BA).
+  void place_culled_keyframes();
+  int num_culled_keyframes() const;
+
   // Recounts the points the keyframe shares with every other keyframe, links them in the
   // covisibility graph (both ways) and, the first time, sets its parent in the spanning tree.
   void update_connections(int keyframe);

@@ -43,18 +43,59 @@ int LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
         MapBaJob::local_window(map_, id, camera_, settings_.optimization));
     solving_ = std::async(launch_, [job = pending_.get()] { job->solve(); });
   }
+  // Part of the back end: the front end alone (`track`, no local BA) keeps every keyframe.
+  if (settings_.mapping.cull_keyframes && ba.enabled) cull_around_ = id;
   report.ms = watch.lap();
   reports_.push_back(report);
   return id;
 }
 
 void LocalMapper::finish() {
-  if (!pending_) return;
-  solving_.get();
-  MappingReport& report = reports_.back();  // the keyframe whose BA this is
-  report.ba = pending_->apply(map_);
-  report.ba_run = report.ba.report.solved;
-  pending_.reset();
+  if (pending_) {
+    solving_.get();
+    MappingReport& report = reports_.back();  // the keyframe whose BA this is
+    report.ba = pending_->apply(map_);
+    report.ba_run = report.ba.report.solved;
+    pending_.reset();
+  }
+  // ORB-SLAM2 culls right after local BA; here that is where the BA is applied, so that
+  // tracking sees the same map whether BA ran beside it or not.
+  if (cull_around_ >= 0) {
+    reports_.back().culled_keyframes = cull_redundant_keyframes(cull_around_);
+    cull_around_ = -1;
+  }
+}
+
+int LocalMapper::cull_redundant_keyframes(int keyframe) {
+  int culled = 0;
+  for (int neighbour : map_.best_covisible(keyframe, 0))  // a copy: culling edits the lists
+    if (neighbour != 0 && redundant(neighbour)) {
+      map_.cull_keyframe(neighbour);
+      ++culled;
+    }
+  return culled;
+}
+
+bool LocalMapper::redundant(int keyframe) const {
+  // ORB-SLAM2's KeyFrameCulling test on the keyframe's close points.
+  const MappingSettings& s = settings_.mapping;
+  const Keyframe& k = map_.keyframe(keyframe);
+  int close = 0, seen_elsewhere = 0;
+  for (size_t i = 0; i < k.point_ids.size(); ++i) {
+    const int id = k.point_ids[i];
+    if (id < 0 || map_.point(id).bad || k.depths[i] <= 0 || k.depths[i] > s.culling_max_depth)
+      continue;
+    ++close;
+    const MapPoint& p = map_.point(id);
+    if (p.num_observations() <= s.culling_observers) continue;
+    int observers = 0;
+    for (const Observation& o : p.observations)
+      observers += o.keyframe != keyframe &&
+                   map_.keyframe(o.keyframe).keypoints[size_t(o.keypoint)].octave <=
+                       k.keypoints[i].octave + 1;
+    seen_elsewhere += observers >= s.culling_observers;
+  }
+  return seen_elsewhere > s.culling_redundancy * close;
 }
 
 int LocalMapper::create_points(int keyframe) {

@@ -20,8 +20,9 @@ struct MappingReport {
   int new_points = 0;
   int culled_points = 0;
   int fused_points = 0;
-  bool ba_run = false;    // false: disabled, too few keyframes, or the camera was quasi-static
-  MapAdjustment ba;       // when ba_run
+  int culled_keyframes = 0;  // redundant neighbours culled after this keyframe's local BA
+  bool ba_run = false;       // false: disabled, too few keyframes, or the camera was quasi-static
+  MapAdjustment ba;          // when ba_run
   double ms = 0;          // the insertion on the tracking thread, waiting for the last BA included
   double ba_wait_ms = 0;  // of which waiting for the previous keyframe's BA to finish
 };
@@ -49,6 +50,8 @@ class LocalMapper {
   int create_points(int keyframe);
   int cull_recent_points(int keyframe);
   int fuse_duplicates(int keyframe);
+  int cull_redundant_keyframes(int keyframe);
+  bool redundant(int keyframe) const;
 
   Camera camera_;
   Settings settings_;
@@ -58,6 +61,7 @@ class LocalMapper {
   std::launch launch_;
   std::unique_ptr<MapBaJob> pending_;  // the last keyframe's local BA, not yet applied
   std::future<void> solving_;
+  int cull_around_ = -1;  // the keyframe whose neighbours are checked once its BA is applied
 };
 
 // The paper's quasi-static measure over consecutive poses: s_e = sum |t_i|^2 + w_e sum

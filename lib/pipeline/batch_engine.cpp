@@ -30,7 +30,8 @@ Trajectory RunResult::tracked_trajectory() const {
 
 Trajectory RunResult::keyframe_trajectory() const {
   Trajectory t;
-  for (const Keyframe& k : map.keyframes()) t.push_back(k.stamp, k.T_w_c);
+  for (const Keyframe& k : map.keyframes())
+    if (!k.culled) t.push_back(k.stamp, k.T_w_c);
   return t;
 }
 
@@ -144,6 +145,7 @@ void adjust_globally(RunResult& result, const Camera& camera, const Settings& se
 }
 
 void reanchor_frames(RunResult& result) {
+  result.map.place_culled_keyframes();
   for (TrackedFrame& f : result.frames)
     if (f.reference_keyframe >= 0)
       f.T_w_c = orthonormalised(result.map.keyframe(f.reference_keyframe).T_w_c * f.T_ref_c);
@@ -156,8 +158,10 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
   std::vector<FusionFrame> keyframes;
   for (size_t k = 0; k < result.map.keyframes().size(); ++k) {
     const Keyframe& keyframe = result.map.keyframe(int(k));
-    keyframes.push_back({keyframe.frame_index, keyframe.T_w_c,
-                         k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});
+    if (keyframe.culled) continue;  // redundant: its view is in the others
+    keyframes.push_back(
+        {keyframe.frame_index, keyframe.T_w_c,
+         k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});
   }
   std::vector<FusionFrame> frames;
   if (settings.fusion.frame_step <= 0) {

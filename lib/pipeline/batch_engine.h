@@ -73,7 +73,8 @@ void close_loops_of(RunResult& result, const Camera& camera, const Settings& set
 void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings);
 
 // Every frame takes its reference keyframe's final pose composed with its pose relative to
-// that keyframe when it was tracked (keyframes take their own).
+// that keyframe when it was tracked (keyframes take their own); a culled keyframe first takes
+// its parent's, as ORB-SLAM2 writes its trajectory.
 void reanchor_frames(RunResult& result);
 
 // The fused map of the final poses, written to `ply_path` (settings.fusion).

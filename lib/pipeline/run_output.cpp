@@ -50,17 +50,18 @@ void write_tracking_csv(std::ostream& out, const RunResult& result) {
 }
 
 void write_mapping_csv(std::ostream& out, const RunResult& result) {
-  out << "keyframe,frame,new_points,culled_points,fused_points,local_ba,free_keyframes,"
-         "fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,ba_ms,mapping_ms,"
-         "ba_wait_ms\n";
+  out << "keyframe,frame,new_points,culled_points,fused_points,culled_keyframes,local_ba,"
+         "free_keyframes,fixed_keyframes,ba_points,ba_observations,ba_iterations,ba_outliers,"
+         "ba_ms,mapping_ms,ba_wait_ms\n";
   const auto& keyframes = result.map.keyframes();
   for (const MappingReport& r : result.keyframe_reports) {
     const MapAdjustment& ba = r.ba;
     out << r.keyframe << ',' << keyframes[size_t(r.keyframe)].frame_index << ',' << r.new_points
-        << ',' << r.culled_points << ',' << r.fused_points << ',' << int(r.ba_run) << ','
-        << ba.free_keyframes << ',' << ba.fixed_keyframes << ',' << ba.points << ','
-        << ba.observations << ',' << ba.report.iterations << ',' << ba.removed_observations << ','
-        << ba.report.seconds * 1000.0 << ',' << r.ms << ',' << r.ba_wait_ms << '\n';
+        << ',' << r.culled_points << ',' << r.fused_points << ',' << r.culled_keyframes << ','
+        << int(r.ba_run) << ',' << ba.free_keyframes << ',' << ba.fixed_keyframes << ','
+        << ba.points << ',' << ba.observations << ',' << ba.report.iterations << ','
+        << ba.removed_observations << ',' << ba.report.seconds * 1000.0 << ',' << r.ms << ','
+        << r.ba_wait_ms << '\n';
   }
 }
 
@@ -74,17 +75,17 @@ nlohmann::json stage_seconds_json(const StageTimes& t) {
 // verified rows) let the evaluator judge each loop against groundtruth (eval/loop_accuracy.h).
 void write_loops_csv(std::ostream& out, const LoopPassReport& loops, const Map& map) {
   out << "keyframe,candidate,keyframe_stamp,candidate_stamp,score,min_score,"
-         "consistent_neighbours,verified,matches,inliers,neighbourhood_inliers,pose_error_m,tx,ty,tz,qx,qy,qz,qw,"
-         "accepted,reason\n";
+         "consistent_neighbours,verified,matches,inliers,neighbourhood_inliers,pose_error_m,"
+         "tx,ty,tz,qx,qy,qz,qw,accepted,reason\n";
   for (const LoopDecision& d : loops.decisions) {
     const Eigen::Vector3d t = d.check.T_keyframe_candidate.translation();
     const Eigen::Quaterniond q(d.check.T_keyframe_candidate.linear());
     out << d.keyframe << ',' << d.candidate << ',' << format_exact(map.keyframe(d.keyframe).stamp)
         << ',' << format_exact(map.keyframe(d.candidate).stamp) << ',' << d.score << ','
         << d.min_score << ',' << d.consistent << ',' << d.verified << ',' << d.check.matches << ','
-        << d.check.inliers << ',' << d.check.neighbourhood_inliers << ',' << d.check.pose_error << ',' << t.x() << ',' << t.y() << ','
-        << t.z() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << q.w() << ','
-        << d.check.accepted << ",\"" << d.check.reason << "\"\n";
+        << d.check.inliers << ',' << d.check.neighbourhood_inliers << ',' << d.check.pose_error
+        << ',' << t.x() << ',' << t.y() << ',' << t.z() << ',' << q.x() << ',' << q.y() << ','
+        << q.z() << ',' << q.w() << ',' << d.check.accepted << ",\"" << d.check.reason << "\"\n";
   }
 }
 
@@ -267,7 +268,8 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   nlohmann::json json;
   json["sequence"] = sequence_name;
   json["frames"] = result.frames.size();
-  json["keyframes"] = result.map.keyframes().size();
+  json["keyframes"] = result.map.keyframes().size() - size_t(result.map.num_culled_keyframes());
+  json["culled_keyframes"] = result.map.num_culled_keyframes();
   json["threads"] = result.threads;
   json["seconds"] = stage_seconds_json(t);
   json["frames_per_second"] = timing.frames_per_second;

@@ -190,7 +190,8 @@ std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFram
   const auto& keyframes = map_.keyframes();
   std::vector<std::pair<double, size_t>> ranked;
   for (size_t k = 0; k + 1 < keyframes.size(); ++k)
-    ranked.push_back({-window_similarity(frame.window_code, keyframes[k].window_code), k});
+    if (!keyframes[k].culled)  // no points left to match
+      ranked.push_back({-window_similarity(frame.window_code, keyframes[k].window_code), k});
   const size_t count =
       std::min(ranked.size(), size_t(settings_.tracking.relocalisation_candidates));
   std::partial_sort(ranked.begin(), ranked.begin() + long(count), ranked.end());

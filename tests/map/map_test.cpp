@@ -114,6 +114,60 @@ TEST(Map, SpanningTreeParentIsTheBestNeighbourAtInsertion) {
   EXPECT_EQ(map.keyframe(0).children, (std::vector<int>{1, 2, 3}));
 }
 
+TEST(Map, CullingAKeyframeReparentsItsChildrenAndKeepsItsRelativePose) {
+  // Keyframe 0 makes points 0..39 and keyframe 1 (seeing them all) points 40..79; keyframe 2
+  // sees 20..79 (20 shared with 0, 60 with 1) and keyframe 3 30..79 (10 with 0, 50 with 1 and
+  // 2): both hang from 1 in the spanning tree.
+  Map map(PyramidGeometry{}, 15);
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  for (int k = 0; k < 4; ++k) {
+    T.translation().x() = 0.1 * k;
+    Keyframe kf = keyframe_with(80, size_t(k), T);
+    const int first = k == 0 ? 0 : k == 1 ? 0 : k == 2 ? 20 : 30;
+    const int last = k == 0 ? 0 : 80;
+    for (int i = first; i < last; ++i)
+      if (k > 1 || i < 40) kf.point_ids[size_t(i)] = i;
+    const int id = map.add_keyframe(std::move(kf));
+    const int make_from = k == 0 ? 0 : k == 1 ? 40 : 80;
+    for (int i = make_from; i < make_from + 40 && i < 80; ++i)
+      map.add_point(Eigen::Vector3d(0.01 * i, 0, 2), id, i);
+    map.update_connections(id);
+  }
+  ASSERT_EQ(map.keyframe(2).parent, 1);
+  ASSERT_EQ(map.keyframe(3).parent, 1);
+  const Eigen::Isometry3d T_0_1 = map.keyframe(0).T_c_w * map.keyframe(1).T_w_c;
+
+  map.cull_keyframe(1);
+  const Keyframe& culled = map.keyframe(1);
+  EXPECT_TRUE(culled.culled);
+  EXPECT_EQ(std::count_if(culled.point_ids.begin(), culled.point_ids.end(),
+                          [](int id) { return id >= 0; }),
+            0);
+  EXPECT_EQ(map.point(0).num_observations(), 1);   // only keyframe 0 now
+  EXPECT_EQ(map.point(50).reference_keyframe, 2);  // the next observer took over
+  for (int k : {0, 2, 3}) {
+    EXPECT_EQ(map.keyframe(k).shared_points.count(1), 0u) << k;
+    EXPECT_EQ(std::count(map.keyframe(k).covisible.begin(), map.keyframe(k).covisible.end(), 1), 0)
+        << k;
+  }
+  // Child 2 shares most with the culled keyframe's parent (20 > 10): it goes first, to 0;
+  // child 3 then shares 50 with 2 against 10 with 0.
+  EXPECT_EQ(map.keyframe(2).parent, 0);
+  EXPECT_EQ(map.keyframe(3).parent, 2);
+  EXPECT_EQ(map.keyframe(0).children, (std::vector<int>{2}));
+  EXPECT_EQ(map.keyframe(2).children, (std::vector<int>{3}));
+  EXPECT_EQ(culled.parent, 0);
+
+  // The culled keyframe follows its parent at the relative pose it had.
+  Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();
+  moved.linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  moved.translation() = Eigen::Vector3d(1, 2, 3);
+  map.set_keyframe_pose(0, moved);
+  map.place_culled_keyframes();
+  EXPECT_TRUE(map.keyframe(1).T_w_c.isApprox(moved * T_0_1, 1e-12));
+  EXPECT_EQ(map.num_culled_keyframes(), 1);
+}
+
 TEST(Map, RepresentativeDescriptorHasTheLeastMedianDistance) {
   Map map(PyramidGeometry{}, 15);
   // Three views of one point: descriptors a, b, c with 0, 8 and 40 bits set. Each one's sorted

@@ -119,6 +119,47 @@ TEST(LocalMapper, PointsSeenByOneKeyframeAreCulledAfterTwoMore) {
   EXPECT_EQ(map.num_good_points(), 20);
 }
 
+// Five keyframes a little apart, each after the first tracking every point of the first; local
+// BA on but skipped as quasi-static (culling comes with the back end, not its solves), and
+// culling on.
+std::vector<int> culled_after_five_views(int observers, int later_octave) {
+  const World world(60);
+  Settings settings;
+  settings.optimization.local.min_motion = 1e9;
+  settings.mapping.cull_keyframes = true;
+  settings.mapping.culling_observers = observers;
+  Map map;
+  LocalMapper mapper(world.camera, settings, map, false);
+  mapper.insert_keyframe(world.view(Eigen::Isometry3d::Identity(), 0), 0);
+  for (size_t k = 1; k < 5; ++k) {
+    Keyframe next = world.view(moved(0.01 * double(k)), k);
+    next.point_ids = map.keyframe(0).point_ids;
+    if (k > 1)
+      for (cv::KeyPoint& kp : next.keypoints) kp.octave = later_octave;
+    mapper.insert_keyframe(std::move(next), 0);
+  }
+  mapper.finish();
+  std::vector<int> culled;
+  for (size_t k = 0; k < map.keyframes().size(); ++k)
+    if (map.keyframe(int(k)).culled) culled.push_back(int(k));
+  return culled;
+}
+
+TEST(LocalMapper, KeyframesWhosePointsThreeOthersSeeAreCulled) {
+  // Each insertion checks the previous keyframe's neighbours. When keyframe 4 comes, keyframe
+  // 1's points are each seen by 0, 2 and 3: culled. At the end keyframe 2's are seen by 0, 3
+  // and 4: culled; keyframe 3's then only by 0 and 4. Keyframe 0 holds the world frame.
+  EXPECT_EQ(culled_after_five_views(3, 0), (std::vector<int>{1, 2}));
+  // Four other views: only keyframe 1 at the end (0, 2, 3 and 4 see its points).
+  EXPECT_EQ(culled_after_five_views(4, 0), (std::vector<int>{1}));
+  EXPECT_EQ(culled_after_five_views(5, 0), (std::vector<int>{}));
+  // Views at an octave more than one coarser than the keyframe's own do not count
+  // (ORB-SLAM2): keyframe 1 (octave 0) stays, seen at octave 2 by 2, 3 and 4, while those are
+  // seen finely enough by 0, 1 and each other.
+  EXPECT_EQ(culled_after_five_views(3, 2), (std::vector<int>{2, 3}));
+  EXPECT_EQ(culled_after_five_views(3, 1), (std::vector<int>{1, 2}));
+}
+
 TEST(LocalMapper, QuasiStaticMotionIsThePapersWeightedSum) {
   Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
   step.translation() = Eigen::Vector3d(0.01, 0, 0);

@@ -129,6 +129,8 @@ TEST(SweepCli, ShippedSweepsPlan) {
        "orb-features: 4 entries x 3 variants x the suite's seeds = 12 jobs"},
       {"sweep-dense-seeds.yaml",
        "dense-seeds: 2 entries x 2 variants x 3 seeds (1, 2, 3) = 12 jobs"},
+      {"sweep-keyframe-culling.yaml",
+       "keyframe-culling: 3 entries x 3 variants x 3 seeds (1, 2, 3) = 27 jobs"},
   };
   int found = 0;
   for (const auto& entry : fs::directory_iterator(results)) {
