@@ -158,7 +158,7 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
   std::vector<FusionFrame> keyframes;
   for (size_t k = 0; k < result.map.keyframes().size(); ++k) {
     const Keyframe& keyframe = result.map.keyframe(int(k));
-    if (keyframe.culled) continue;  // redundant: its view is in the others
+    if (keyframe.culled) continue;  // left out, as from global BA and the loop pass
     keyframes.push_back(
         {keyframe.frame_index, keyframe.T_w_c,
          k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});

@@ -28,7 +28,7 @@ struct MappingSettings {
   // covisible neighbours: one whose close points (keypoint depth up to culling_max_depth) are
   // redundant in more than culling_redundancy of cases is culled; a point is redundant when
   // culling_observers other keyframes see it at the same octave or one finer. ORB-SLAM2 culls;
-  // (ours) off by default: `run` takes 13-38% less time with it (it culls a quarter of desk
+  // (ours) off by default: `run` takes 10-38% less time with it (it culls a quarter of desk
   // 600's keyframes, nearly half of loop 600's), but ATE moves with it by up to 6 mm a seed on loop
   // 600, both ways, and the mean over seeds 1-6 of loop 600 got worse (16.1 -> 17.9 mm) while
   // lowtexture 600's got better (3.9 -> 3.8 mm); README's back-end section has the table.
