@@ -118,18 +118,19 @@ TEST(Map, CullingAKeyframeReparentsItsChildrenAndKeepsItsRelativePose) {
   // Keyframe 0 makes points 0..39 and keyframe 1 (seeing them all) points 40..79; keyframe 2
   // sees 20..79 (20 shared with 0, 60 with 1) and keyframe 3 30..79 (10 with 0, 50 with 1 and
   // 2): both hang from 1 in the spanning tree.
+  struct Range {
+    int begin, end;
+  };
+  const Range tracked[] = {{0, 0}, {0, 40}, {20, 80}, {30, 80}};  // keypoint i sees point i
+  const Range made[] = {{0, 40}, {40, 80}, {0, 0}, {0, 0}};
   Map map(PyramidGeometry{}, 15);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   for (int k = 0; k < 4; ++k) {
     T.translation().x() = 0.1 * k;
     Keyframe kf = keyframe_with(80, size_t(k), T);
-    const int first = k == 0 ? 0 : k == 1 ? 0 : k == 2 ? 20 : 30;
-    const int last = k == 0 ? 0 : 80;
-    for (int i = first; i < last; ++i)
-      if (k > 1 || i < 40) kf.point_ids[size_t(i)] = i;
+    for (int i = tracked[k].begin; i < tracked[k].end; ++i) kf.point_ids[size_t(i)] = i;
     const int id = map.add_keyframe(std::move(kf));
-    const int make_from = k == 0 ? 0 : k == 1 ? 40 : 80;
-    for (int i = make_from; i < make_from + 40 && i < 80; ++i)
+    for (int i = made[k].begin; i < made[k].end; ++i)
       map.add_point(Eigen::Vector3d(0.01 * i, 0, 2), id, i);
     map.update_connections(id);
   }
