@@ -40,9 +40,9 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
     removed += r.ba.removed_observations;
   }
   const StageTimes& t = result.seconds;
-  const int culled = result.map.num_culled_keyframes();
-  std::printf("map         %zu keyframes (%d redundant ones culled), %d points\n",
-              result.map.keyframes().size() - size_t(culled), culled, result.map.num_good_points());
+  std::printf("map         %d keyframes (%d redundant ones culled), %d points\n",
+              result.map.num_active_keyframes(), result.map.num_culled_keyframes(),
+              result.map.num_good_points());
   std::printf("local BA    %d of %zu keyframes, %d outlier observations removed, %.2f s\n",
               local_runs, result.keyframe_reports.size(), removed, t.local_ba);
   const LoopPassReport& lp = result.loop_pass;

@@ -50,6 +50,8 @@ class Map {
   // its parent moved, e.g. in global BA).
   void place_culled_keyframes();
   int num_culled_keyframes() const;
+  // The keyframes not culled: those the loop pass, global BA and the fused map use.
+  int num_active_keyframes() const { return int(keyframes_.size()) - num_culled_keyframes(); }
 
   // Recounts the points the keyframe shares with every other keyframe, links them in the
   // covisibility graph (both ways) and, the first time, sets its parent in the spanning tree.

@@ -78,6 +78,14 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   const bool keep_samples = settings.fusion.enabled && settings.fusion.frame_step <= 0;
   size_t cached_bytes = 0;
   const size_t cache_limit = size_t(settings.fusion.keyframe_cache_mb) << 20;
+  // Culled keyframes stay out of the fused map: their samples make room for later ones.
+  auto release_culled_samples = [&] {
+    for (size_t k = 0; k < result.keyframe_samples.size(); ++k)
+      if (result.keyframe_samples[k] && result.map.keyframe(int(k)).culled) {
+        cached_bytes -= result.keyframe_samples[k]->bytes();
+        result.keyframe_samples[k].reset();
+      }
+  };
   for (size_t begin = 0; begin < sequence.size(); begin += chunk) {
     auto [frames, prepare_seconds] = next.get();
     result.seconds.prepare += prepare_seconds;
@@ -98,6 +106,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
             quasi_static_motion(since_keyframe, settings.optimization.local.motion_rotation_weight);
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
+        release_culled_samples();
         std::shared_ptr<const FusionSamples> samples;
         if (keep_samples && cached_bytes < cache_limit) {
           samples = std::make_shared<const FusionSamples>(
@@ -119,6 +128,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   omp_set_num_threads(result.threads);
   Stopwatch last_ba;
   mapper.finish();
+  release_culled_samples();
   result.seconds.track += last_ba.lap() / 1000.0;
   result.keyframe_reports = mapper.reports();
   for (const MappingReport& r : result.keyframe_reports)

@@ -41,7 +41,7 @@ struct RunResult {
   std::vector<MappingReport> keyframe_reports;   // one per keyframe
   Map map;
   // Per keyframe, its samples for the map's fusion while within fusion.keyframe_cache_mb
-  // (null beyond it, or without fusion).
+  // (null beyond it, for a culled keyframe, or without fusion).
   std::vector<std::shared_ptr<const FusionSamples>> keyframe_samples;
   LoopPassReport loop_pass;  // ran = false unless the loop pass ran
   MapAdjustment global_ba;   // empty unless the global BA ran

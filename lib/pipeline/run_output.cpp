@@ -268,7 +268,7 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   nlohmann::json json;
   json["sequence"] = sequence_name;
   json["frames"] = result.frames.size();
-  json["keyframes"] = result.map.keyframes().size() - size_t(result.map.num_culled_keyframes());
+  json["keyframes"] = result.map.num_active_keyframes();
   json["culled_keyframes"] = result.map.num_culled_keyframes();
   json["threads"] = result.threads;
   json["seconds"] = stage_seconds_json(t);

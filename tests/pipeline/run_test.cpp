@@ -138,9 +138,18 @@ TEST(Run, CulledKeyframesStillPlaceTheirFramesSameWithOneAndTwoThreads) {
   EXPECT_EQ(count_lost(run), 0);
   EXPECT_EQ(run.trajectory().size(), seq.size());
   EXPECT_LT(ate_rmse(*seq.groundtruth(), run.trajectory()), 0.001);
-  EXPECT_EQ(run.keyframe_trajectory().size(), run.map.keyframes().size() - size_t(culled));
+  EXPECT_EQ(run.keyframe_trajectory().size(), size_t(run.map.num_active_keyframes()));
   for (const char* file : {"trajectory.txt", "keyframes.txt", "map.ply"})
     EXPECT_EQ(test::file_text(dir / "1" / file), test::file_text(dir / "2" / file)) << file;
+
+  // Tracking keeps the fusion samples of the keyframes that stay, and of no culled one.
+  Settings settings;
+  settings.mapping.cull_keyframes = true;
+  const RunResult tracked = track_sequence(seq, settings);
+  ASSERT_EQ(tracked.keyframe_samples.size(), tracked.map.keyframes().size());
+  EXPECT_EQ(tracked.map.num_culled_keyframes(), culled);
+  for (size_t k = 0; k < tracked.keyframe_samples.size(); ++k)
+    EXPECT_EQ(tracked.keyframe_samples[k] == nullptr, tracked.map.keyframe(int(k)).culled) << k;
 }
 
 TEST(Run, SameTrajectoryAndMapWithOneAndTwoThreads) {
