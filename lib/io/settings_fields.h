@@ -178,6 +178,7 @@ template <class V>
 void visit_fields(LoopSettings& s, V& v) {
   v.field("enabled", s.enabled);
   v.field("train_on_sequence", s.train_on_sequence);
+  v.field("training_keyframe_step", s.training_keyframe_step, at_least(1));
   v.field("recent_keyframes", s.recent_keyframes, at_least(0));
   v.field("min_consistent_neighbours", s.min_consistent_neighbours, at_least(0));
   v.field("consistency_neighbours", s.consistency_neighbours, at_least(1));

@@ -123,8 +123,10 @@ LoopPassReport close_loops(Map& map, const Camera& camera, const Settings& setti
   Vocabulary trained;
   if (!vocabulary) {
     std::vector<cv::Mat> images;
+    int active = 0;
     for (const Keyframe& k : map.keyframes())
-      if (!k.culled) images.push_back(k.descriptors);
+      if (!k.culled && active++ % s.training_keyframe_step == 0)
+        images.push_back(k.descriptors);
     trained = train_vocabulary(images, settings.vocabulary);
     vocabulary = &trained;
   }

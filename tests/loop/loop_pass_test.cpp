@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "loop/loop_map_fixture.h"
+#include "loop/vocabulary_training.h"
 
 namespace slamkit {
 namespace {
@@ -82,6 +83,24 @@ TEST(LoopPass, GapsBelowMinCorrectionLeaveTheMapAsItIs) {
   EXPECT_FALSE(report.correction.solved);
   for (size_t k = 0; k < map.keyframes().size(); ++k)
     EXPECT_EQ(map.keyframe(int(k)).T_w_c.matrix(), m.run.map.keyframe(int(k)).T_w_c.matrix());
+}
+
+TEST(LoopPass, TrainingOnEverySecondKeyframeStillFindsTheLoop) {
+  const test::LoopMap& m = test::loop_map();
+  Map map = m.run.map;
+  Settings settings;
+  settings.loop.training_keyframe_step = 2;
+  const LoopPassReport report = close_loops(map, m.sequence.camera(), settings, nullptr);
+  // The tree is the one trained on keyframes 0, 2, 4, ... alone.
+  std::vector<cv::Mat> every_second;
+  for (size_t k = 0; k < m.run.map.keyframes().size(); k += 2)
+    every_second.push_back(m.run.map.keyframe(int(k)).descriptors);
+  EXPECT_EQ(report.vocabulary_words, train_vocabulary(every_second, settings.vocabulary).word_count());
+  Map every_keyframe_map = m.run.map;
+  EXPECT_LT(report.vocabulary_words,
+            close_loops(every_keyframe_map, m.sequence.camera(), Settings{}, nullptr).vocabulary_words);
+  EXPECT_FALSE(report.loops.empty());
+  EXPECT_TRUE(report.correction.solved);
 }
 
 TEST(LoopPass, DisabledOrTooFewKeyframesDoesNotRun) {

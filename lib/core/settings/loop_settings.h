@@ -10,6 +10,10 @@ struct LoopSettings {
   // own descriptors (vocabulary settings: k, L) unless a vocabulary file is given
   // (`run --vocabulary FILE`).
   bool train_on_sequence = true;
+  // (ours) That training takes the descriptors of every n-th active keyframe; the others are
+  // still looked up in the tree. 2 halves the training (loop 600: 2.4 -> 1.2 s) and moved ATE
+  // by -0.15 to +0.07 mm (loop 600 seeds 1-3, long 2000); 4 made every loop seed 0.13 mm worse.
+  int training_keyframe_step = 1;
   // (ORB-SLAM2) Keyframes this close in index to the query are never loop candidates (besides
   // its covisible neighbours), and no loop is searched before this many keyframes exist.
   int recent_keyframes = 10;
