@@ -80,6 +80,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   const size_t cache_limit = size_t(settings.fusion.keyframe_cache_mb) << 20;
   // Culled keyframes stay out of the fused map: their samples make room for later ones.
   auto release_culled_samples = [&] {
+    if (!settings.mapping.cull_keyframes) return;  // no scan per keyframe when nothing is culled
     for (size_t k = 0; k < result.keyframe_samples.size(); ++k)
       if (result.keyframe_samples[k] && result.map.keyframe(int(k)).culled) {
         cached_bytes -= result.keyframe_samples[k]->bytes();
