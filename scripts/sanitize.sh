@@ -13,11 +13,13 @@ build_dir="${SLAMKIT_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 suites=(core_tests io_tests eval_tests cli_tests fuzz_replay_tests keyframes_tests map_tests
         features_tests)
 
-"$root/scripts/setup.sh" --packages-only
+"$root/scripts/setup.sh" --test-tools --packages-only
 
 mkdir -p "$build_dir"
 log="$build_dir/sanitize-build.log"
-if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSLAMKIT_SANITIZE=ON \
+# clang: with the sanitizers it compiles in a third of gcc's time (cmake/sanitizers.cmake).
+if ! { CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
+         -DSLAMKIT_SANITIZE=ON \
          -DSLAMKIT_BUILD_BENCHMARKS=OFF &&
        cmake --build "$build_dir" -j "$(nproc)" --target slamkit "${suites[@]}"; } >"$log" 2>&1; then
   tail -n 40 "$log" >&2

@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages slamkit needs (only those missing) and builds it.
 # Idempotent and quiet when everything is already in place. Works as root or through sudo.
 #   scripts/setup.sh            # install what is missing, configure, build (Release)
-#   --test-tools                # also clang 14 and libFuzzer, for scripts/fuzz.sh and the
+#   --test-tools                # also clang 14, libFuzzer and OpenMP for clang, for scripts/fuzz.sh and the
 #                               # sanitizer build (scripts/test.sh asks for them under CI)
 #   --with-slurm                # also Slurm, slurmdbd, munge and MariaDB's server binary, for
 #                               # the loopback Slurm test (scripts/slurm_loopback.sh; asked
@@ -38,7 +38,7 @@ packages=(
   python3-matplotlib
 )
 if $test_tools; then
-  packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev)
+  packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev)
 fi
 if $with_slurm; then
   # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)

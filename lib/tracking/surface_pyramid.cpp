@@ -56,7 +56,7 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
     float* zv = Z + size_t(v) * size_t(w);
 #pragma omp simd
     for (int u = 0; u < w; ++u) {
-      const float none = (z[u] >= min_depth) & (z[u] <= max_depth) ? 0.0f : kNaN;
+      const float none = ((z[u] >= min_depth) & (z[u] <= max_depth)) ? 0.0f : kNaN;
       zv[u] = z[u] + none;
       src[u] += none;
     }
@@ -95,7 +95,7 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
       const float bz = zd[u] - zu[u];
       const float n_x = ay * bz - az * by, n_y = az * bx - ax * bz, n_z = ax * by - ay * bx;
       const float norm = std::sqrt(n_x * n_x + n_y * n_y + n_z * n_z);
-      const float none = surface & (norm > 0) ? 0.0f : kNaN;
+      const float none = (surface & (norm > 0)) ? 0.0f : kNaN;
       nx[u] = n_x / norm + none;
       ny[u] = n_y / norm + none;
       nz[u] = n_z / norm + none;
