@@ -12,9 +12,8 @@ if(SLAMKIT_SANITIZE OR SLAMKIT_FUZZ)
   add_compile_options(-O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
                       -fno-omit-frame-pointer)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    # -O1 leaves the `omp simd` loops scalar (a warning each), and the dense loops combine
-    # conditions with a bitwise & on purpose: no branch, so that they vectorise at -O3.
-    add_compile_options(-gline-tables-only -Wno-pass-failed -Wno-bitwise-instead-of-logical)
+    # -O1 leaves the `omp simd` loops scalar: a warning each otherwise.
+    add_compile_options(-gline-tables-only -Wno-pass-failed)
   else()
     add_compile_options(-g1)
   endif()

@@ -1,33 +1,23 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (tests/fuzz, clang with ASan+UBSan) and runs each for a bounded
-# time. Every crash, hang or out-of-memory input found is copied to
-# tests/fuzz_regressions/<target>/, which an ordinary ctest test replays on every run; the
-# script then exits 1.
+# Builds the libFuzzer targets (tests/fuzz, clang with ASan+UBSan, in the tree of
+# scripts/sanitizer_build.sh) and runs each for a bounded time. Every crash, hang or
+# out-of-memory input found is copied to tests/fuzz_regressions/<target>/, which an ordinary
+# ctest test replays on every run; the script then exits 1.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   # SECONDS per target (default 60); all targets
 # Seeds: tests/fuzz/seeds/<target>/, the regression suites in results/, and the real files
 # under SLAMKIT_DATA (gathered at run time, cut to 4 KB). The corpus grows in
 # <build>/corpus/<target>/ from run to run.
-# Environment: SLAMKIT_FUZZ_BUILD_DIR (default: build-fuzz/ in the repository).
+# Environment: SLAMKIT_SANITIZE_BUILD_DIR (default: build-sanitize/ in the repository).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build_dir="${SLAMKIT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+build_dir="${SLAMKIT_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 seconds="${1:-60}"
 (($# > 0)) && shift
 targets=(tum_list association trajectory settings calibration png suite sweep)  # as tests/fuzz
 (($# > 0)) && targets=("$@")
 
-"$root/scripts/setup.sh" --test-tools --packages-only
-
-mkdir -p "$build_dir"
-log="$build_dir/fuzz-build.log"
-if ! { CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-         -DSLAMKIT_FUZZ=ON -DSLAMKIT_BUILD_TESTS=OFF -DSLAMKIT_BUILD_BENCHMARKS=OFF &&
-       cmake --build "$build_dir" --target fuzzers -j "$(nproc)"; } >"$log" 2>&1; then
-  tail -n 40 "$log" >&2
-  echo "fuzz: build failed; full log in $log" >&2
-  exit 1
-fi
+"$root/scripts/sanitizer_build.sh" fuzzers
 
 # Seeds from the real data: lists, associations and trajectories of every sequence there.
 gather_seeds() {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds slamkit with AddressSanitizer and UndefinedBehaviorSanitizer (SLAMKIT_SANITIZE) and runs
-# the fast test suites under them: any report fails the run. scripts/test.sh runs it under CI.
+# Builds slamkit with AddressSanitizer and UndefinedBehaviorSanitizer (scripts/sanitizer_build.sh)
+# and runs the fast test suites under them: any report fails the run. scripts/test.sh runs it
+# under CI.
 #   scripts/sanitize.sh [CTEST_ARGS...]
 # The suites: the parsers and the command line end to end (io, eval, cli and the replay of the
 # fuzz findings) and the engine's unit suites that take seconds; the long pipeline, regression
@@ -13,19 +14,7 @@ build_dir="${SLAMKIT_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 suites=(core_tests io_tests eval_tests cli_tests fuzz_replay_tests keyframes_tests map_tests
         features_tests)
 
-"$root/scripts/setup.sh" --test-tools --packages-only
-
-mkdir -p "$build_dir"
-log="$build_dir/sanitize-build.log"
-# clang: with the sanitizers it compiles in a third of gcc's time (cmake/sanitizers.cmake).
-if ! { CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
-         -DSLAMKIT_SANITIZE=ON \
-         -DSLAMKIT_BUILD_BENCHMARKS=OFF &&
-       cmake --build "$build_dir" -j "$(nproc)" --target slamkit "${suites[@]}"; } >"$log" 2>&1; then
-  tail -n 40 "$log" >&2
-  echo "sanitize: build failed; full log in $log" >&2
-  exit 1
-fi
+"$root/scripts/sanitizer_build.sh" slamkit "${suites[@]}"
 
 # halt_on_error and abort_on_error: the first report fails its test. Leaks are findings too.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:halt_on_error=1}"
