@@ -1,4 +1,5 @@
-# Instrumented builds, each in a build folder of its own (scripts/sanitize.sh, scripts/fuzz.sh):
+# Instrumented builds (scripts/sanitizer_build.sh builds both in one folder for sanitize.sh and
+# fuzz.sh):
 #   SLAMKIT_SANITIZE  AddressSanitizer + UndefinedBehaviorSanitizer on everything (gcc or clang)
 #   SLAMKIT_FUZZ      the libFuzzer targets of tests/fuzz; clang only, with the same sanitizers
 option(SLAMKIT_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
@@ -7,8 +8,8 @@ option(SLAMKIT_FUZZ "Build the libFuzzer targets (tests/fuzz; needs clang)" OFF)
 if(SLAMKIT_SANITIZE OR SLAMKIT_FUZZ)
   # A UB report aborts like an ASan one, so a test or fuzzer fails on it instead of going on.
   # -O1 (after the build type's flags, so it wins) and line tables only: instrumented code at
-  # -O3 with full debug information took three times as long to compile, which on two cores
-  # was a large part of CI; -O1 is what the sanitizers' documentation recommends.
+  # gcc's -O3 with -g1 took 2.5-4.5 times as long a file to compile as clang at -O1, a large
+  # part of CI on two cores; -O1 is what the sanitizers' documentation recommends.
   add_compile_options(-O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
                       -fno-omit-frame-pointer)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
