@@ -1,9 +1,9 @@
 #pragma once
-// Statistical outlier removal as PCL's StatisticalOutlierRemoval computes it, with its
-// k-nearest-neighbour searches (nearly all of its time) spread over OpenMP threads: PCL 1.13's
-// runs on one thread, 1.9 s of the 4.2 s fusion of synthetic desk 600. Same searcher (PCL's
-// k-d tree), same per-point mean distance, same threshold, so the kept points are PCL's, at any
-// thread count.
+// Statistical outlier removal as PCL's StatisticalOutlierRemoval computes it: the same k-d tree
+// (FLANN's, as PCL builds it), the same per-point mean distance, the same threshold, so the kept
+// points are PCL's, at any thread count. PCL 1.13's filter runs on one thread and queries the
+// tree point by point; here blocks of points are queried on every thread (synthetic desk 600:
+// 3.1 s through PCL's searcher on two threads, 0.8 s in blocks).
 #include <Eigen/Core>
 #include <vector>
 

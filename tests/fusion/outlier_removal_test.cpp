@@ -72,5 +72,24 @@ TEST(StatisticalInliers, SameAtOneAndTwoThreads) {
   EXPECT_EQ(statistical_inliers(points, 8, 1.0), one);
 }
 
+// A cloud smaller than mean_k + 1 gives each point the neighbours it has.
+TEST(StatisticalInliers, FewerPointsThanNeighboursUsesThoseThereAre) {
+  const std::vector<Eigen::Vector3f> points = {
+      {0, 0, 1}, {0.01f, 0, 1}, {0, 0.01f, 1}, {0.01f, 0.01f, 1}, {0.005f, 0.005f, 1}, {2, 2, 3}};
+  EXPECT_EQ(statistical_inliers(points, 20, 1.0), brute_force_inliers(points, 5, 1.0));
+  EXPECT_EQ(statistical_inliers(points, 20, 1.0), (std::vector<size_t>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(statistical_inliers({{1, 2, 3}}, 20, 1.0), std::vector<size_t>{0});
+}
+
+// Non-finite points stay out of the statistics and are kept, as PCL keeps them.
+TEST(StatisticalInliers, NonFinitePointsAreKeptAndLeftOutOfTheStatistics) {
+  std::vector<Eigen::Vector3f> points = clusters_with_strays();
+  const std::vector<size_t> finite_kept = statistical_inliers(points, 20, 2.0);
+  points.insert(points.begin(), Eigen::Vector3f(NAN, 0, 1));
+  std::vector<size_t> expected = {0};
+  for (size_t i : finite_kept) expected.push_back(i + 1);
+  EXPECT_EQ(statistical_inliers(points, 20, 2.0), expected);
+}
+
 }  // namespace
 }  // namespace slamkit
