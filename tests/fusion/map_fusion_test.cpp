@@ -355,14 +355,21 @@ TEST(MapFusion, DepthBeyondMaxDepthIsCut) {
 TEST(MapFusion, MemoryStaysBoundedByTheVoxelCountNotTheFrameCount) {
   const fs::path dir = test::temp_dir("memory");
   FusionSettings settings;
-  settings.batch_frames = 2;
+  settings.batch_frames = 1;  // many batches: each thread keeps one batch's raw cloud
   const FusionReport report =
       fuse_map(sequence(), groundtruth_frames(sequence()), settings, dir / "map.ply");
   const size_t batch_capacity = size_t(settings.batch_frames) * (640 / 2) * (480 / 2);
-  // Merged cloud below 2 x max(voxels, batch capacity), plus the batches in flight.
+  // Merged cloud below 2 x max(voxels, batch capacity), plus per thread its raw batch and the
+  // voxels waiting to be merged.
   EXPECT_LE(report.peak_points, 2 * std::max(report.after_voxel_grid, batch_capacity) +
-                                    (2 + size_t(omp_get_max_threads())) * batch_capacity);
-  EXPECT_LT(report.peak_points, report.raw_points / 2);
+                                    (2 + 2 * size_t(omp_get_max_threads())) * batch_capacity);
+  // The same frames twice: twice the raw points, the same voxels, about the same peak.
+  const std::vector<FusionFrame> once = groundtruth_frames(sequence());
+  std::vector<FusionFrame> twice = once;
+  twice.insert(twice.end(), once.begin(), once.end());
+  const FusionReport doubled = fuse_map(sequence(), twice, settings, dir / "twice.ply");
+  EXPECT_EQ(doubled.raw_points, 2 * report.raw_points);
+  EXPECT_LE(doubled.peak_points, report.peak_points + 2 * batch_capacity);
 }
 
 TEST(MapFusion, BadInputIsAnInputErrorNamingTheFile) {
