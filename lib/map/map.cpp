@@ -225,12 +225,17 @@ void Map::update_point_descriptor(int point) {
     const Observation& o = p.observations[i];
     descriptors.push_back(keyframes_[size_t(o.keyframe)].descriptors.ptr<uchar>(o.keypoint));
   }
+  // The distances are symmetric: each pair is measured once.
+  std::vector<int> distances(n * n, 0);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j)
+      distances[i * n + j] = distances[j * n + i] =
+          descriptor_distance(descriptors[i], descriptors[j]);
   size_t best = 0;
   int best_median = std::numeric_limits<int>::max();
   std::vector<int> row(n);
   for (size_t i = 0; i < n; ++i) {
-    for (size_t j = 0; j < n; ++j)
-      row[j] = i == j ? 0 : descriptor_distance(descriptors[i], descriptors[j]);
+    std::copy_n(distances.begin() + long(i * n), n, row.begin());
     std::nth_element(row.begin(), row.begin() + long((n - 1) / 2), row.end());
     const int median = row[(n - 1) / 2];
     if (median < best_median) best_median = median, best = i;
