@@ -96,12 +96,16 @@ void Map::replace_point(int duplicate, int survivor) {
 
 void Map::update_connections(int keyframe) {
   Keyframe& k = keyframes_[size_t(keyframe)];
-  std::map<int, int> shared;
+  // Counted in one slot a keyframe: a tree map's look-up per observation cost more.
+  std::vector<int> count(keyframes_.size(), 0);
   for (int point : k.point_ids) {
     if (point < 0) continue;
     for (const Observation& o : points_[size_t(point)].observations)
-      if (o.keyframe != keyframe) ++shared[o.keyframe];
+      if (o.keyframe != keyframe) ++count[size_t(o.keyframe)];
   }
+  std::map<int, int> shared;
+  for (size_t other = 0; other < count.size(); ++other)
+    if (count[other] > 0) shared.emplace_hint(shared.end(), int(other), count[other]);
   // Keyframes that no longer share anything drop their side of the link.
   for (const auto& [other, weight] : k.shared_points)
     if (!shared.count(other)) {

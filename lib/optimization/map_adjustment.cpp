@@ -92,10 +92,11 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
     points_.push_back(id);
     problem_.p_w.push_back(p.p_w);
     for (const Observation& o : p.observations) {
-      if (!pose_of.count(o.keyframe)) continue;
+      const auto pose = pose_of.find(o.keyframe);
+      if (pose == pose_of.end()) continue;
       const Keyframe& k = map.keyframe(o.keyframe);
       BaObservation b;
-      b.pose = pose_of.at(o.keyframe);
+      b.pose = pose->second;
       b.point = index;
       b.uv = k.undistorted[size_t(o.keypoint)];
       b.depth = k.depths[size_t(o.keypoint)];
