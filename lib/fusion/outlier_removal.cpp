@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace slamkit {
@@ -23,9 +24,11 @@ std::vector<size_t> statistical_inliers(const std::vector<Eigen::Vector3f>& poin
   // The query point comes back as its own first neighbour; a cloud smaller than mean_k + 1
   // gives each point the neighbours it has.
   const int neighbours = std::min(mean_k, n - 1);
-  std::vector<size_t> all(points.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-  if (neighbours < 1) return all;
+  if (neighbours < 1) {  // no point has a neighbour to be measured against: all stay
+    std::vector<size_t> all(points.size());
+    std::iota(all.begin(), all.end(), size_t{0});
+    return all;
+  }
   const int searched = neighbours + 1;
 
   // PCL's k-d tree for unorganised clouds is this FLANN index (single tree, leaves of 15, exact,
