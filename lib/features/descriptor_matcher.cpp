@@ -1,5 +1,6 @@
 #include "features/descriptor_matcher.h"
 
+#include <algorithm>
 #include <opencv2/features2d.hpp>
 #include <opencv2/flann.hpp>
 
@@ -10,6 +11,7 @@ namespace {
 std::vector<std::vector<cv::DMatch>> nearest(const cv::Mat& query, const cv::Mat& train, int k,
                                              const MatcherSettings& settings) {
   std::vector<std::vector<cv::DMatch>> knn;
+  k = std::min(k, train.rows);  // FLANN asserts k <= rows (a train set of one descriptor)
   if (settings.backend == MatcherBackend::kBruteForce) {
     cv::BFMatcher(cv::NORM_HAMMING).knnMatch(query, train, knn, k);
     return knn;

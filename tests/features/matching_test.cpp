@@ -92,6 +92,22 @@ TEST_P(ShiftedCopy, MatchesFollowTheKnownShift) {
   EXPECT_GT(correct, 0.98 * matches.size());
 }
 
+// A keyframe seeing a plain wall may keep a single descriptor: FLANN asserted when asked
+// for more neighbours than it holds, which ended a run. Its one descriptor is matched.
+TEST_P(ShiftedCopy, TrainSetOfOneDescriptor) {
+  cv::Mat query(5, kDescriptorBytes, CV_8U);
+  cv::RNG rng(3);
+  rng.fill(query, cv::RNG::UNIFORM, 0, 256);
+  const cv::Mat train = query.row(2).clone();
+  MatcherSettings settings;
+  settings.backend = GetParam();
+  const std::vector<cv::DMatch> matches = match_descriptors(query, train, settings);
+  ASSERT_EQ(matches.size(), 1u);
+  EXPECT_EQ(matches[0].queryIdx, 2);
+  EXPECT_EQ(matches[0].trainIdx, 0);
+  EXPECT_EQ(match_descriptors(train, query, settings).size(), 1u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, ShiftedCopy,
                          ::testing::Values(MatcherBackend::kFlannLsh, MatcherBackend::kBruteForce));
 
