@@ -72,6 +72,9 @@ void visit_fields(PointToPlaneSettings& s, V& v) {
   v.field("min_eigenvalue", s.min_eigenvalue, {0, 1});
   v.field("normal_smoothing_diameter", s.normal_smoothing_diameter, {0, 100});
   v.field("normal_smoothing_sigma_depth", s.normal_smoothing_sigma_depth, above(0));
+  v.field("photometric_weight", s.photometric_weight, at_least(0));
+  v.field("photometric_huber", s.photometric_huber, above(0));
+  v.field("photometric_min_gradient", s.photometric_min_gradient, at_least(0));
 }
 
 template <class V>

@@ -22,7 +22,8 @@ struct Step {
 // every other non-linear least squares in slamkit uses Ceres). The system is first made
 // comparable between scenes: per pair, with rotations measured as the displacement they
 // cause at the RMS point distance, so each eigenvalue is the share of the unit
-// point-to-plane information along its direction (0..1). When some direction is below
+// point-to-plane information along its direction (0..1; the photometric term's information,
+// when added, counts in the same unit). When some direction is below
 // min_eigenvalue, Cholesky would follow noise along it: the step is then taken in the
 // well-constrained directions only, and that direction stays at the guess.
 Step solve_step(const PointToPlaneEquations& eq, double min_eigenvalue) {
@@ -68,7 +69,9 @@ Eigen::Isometry3d increment(const Vector6d& x) {
 
 DenseAlignment point_to_plane(const SurfacePyramid& prev, const SurfacePyramid& curr,
                               const Eigen::Isometry3d& T_prev_curr_guess, const cv::Rect& box_prev,
-                              const PointToPlaneSettings& settings) {
+                              const PointToPlaneSettings& settings, const GreyPyramid* prev_grey,
+                              const GreyPyramid* curr_grey) {
+  const bool photometric = prev_grey && curr_grey && settings.photometric_weight > 0;
   CV_Assert(!prev.empty() && prev.size() == curr.size());
   CV_Assert(prev[0].width == curr[0].width && prev[0].height == curr[0].height);
   DenseAlignment result;
@@ -84,7 +87,7 @@ DenseAlignment point_to_plane(const SurfacePyramid& prev, const SurfacePyramid& 
         box_at_level(box, level) & cv::Rect(0, 0, prev_level.width, prev_level.height);
     converged = false;
     for (int it = 0; it < settings.iterations_per_level && !converged; ++it) {
-      const PointToPlaneEquations eq =
+      PointToPlaneEquations eq =
           point_to_plane_equations(prev_level, curr_level, level_box, result.T_prev_curr, settings);
       ++result.iterations;
       result.num_correspondences = eq.count;
@@ -93,6 +96,13 @@ DenseAlignment point_to_plane(const SurfacePyramid& prev, const SurfacePyramid& 
         return result;
       }
       result.rmse = std::sqrt(eq.sum_sq / eq.count);
+      if (photometric) {
+        const PhotometricEquations photo =
+            photometric_equations((*prev_grey)[size_t(level)], (*curr_grey)[size_t(level)],
+                                  curr_level, result.T_prev_curr, settings);
+        eq.H += settings.photometric_weight * photo.H;
+        eq.b += settings.photometric_weight * photo.b;
+      }
       const Step step = solve_step(eq, settings.min_eigenvalue);
       result.min_eigenvalue = step.min_eigenvalue;
       result.T_prev_curr = increment(step.x) * result.T_prev_curr;

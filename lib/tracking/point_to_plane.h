@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/settings/tracking_settings.h"
+#include "tracking/photometric_equations.h"
 #include "tracking/surface_pyramid.h"
 
 namespace slamkit {
@@ -33,10 +34,14 @@ struct DenseAlignment {
 // Refines T_prev_curr (maps current-camera points into the previous camera) from an initial
 // guess, coarse to fine over the surfaces of the two frames (make_surface_pyramid, with the
 // same settings). Only previous-frame pixels inside box_prev (level-0 pixels; the bounding box
-// of the matched keypoints) are used; an empty box means the whole image. Deterministic
-// whatever the OpenMP thread count.
+// of the matched keypoints) are used; an empty box means the whole image. With both frames'
+// grey pyramids (make_grey_pyramid) and a photometric_weight, each step also weighs the
+// current edge pixels' grey levels (photometric_equations). Deterministic whatever the OpenMP
+// thread count.
 DenseAlignment point_to_plane(const SurfacePyramid& prev, const SurfacePyramid& curr,
                               const Eigen::Isometry3d& T_prev_curr_guess, const cv::Rect& box_prev,
-                              const PointToPlaneSettings& settings);
+                              const PointToPlaneSettings& settings,
+                              const GreyPyramid* prev_grey = nullptr,
+                              const GreyPyramid* curr_grey = nullptr);
 
 }  // namespace slamkit

@@ -69,6 +69,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     record.inliers = int(estimate.inliers.size());
     settle_inliers(record.lost ? std::vector<Match>{} : estimate.inliers, record);
     previous_surfaces_ = std::move(estimate.surfaces);
+    previous_grey_pyramid_ = std::move(estimate.grey);
     // A frame re-acquired after a failure was matched to one keyframe, not the local map: its
     // pose is the least reliable, and a keyframe made from it would carry that into the map.
     if (!record.lost && !previous_lost_) choose_keyframe(frame, record);
@@ -76,6 +77,7 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
   }
   poses_.push_back({frame.stamp, record.T_w_c});
   previous_depth_ = frame.depth;
+  previous_grey_ = frame.features.pyramid.levels[0];
   velocity_known_ = !record.lost && !previous_lost_;
   previous_lost_ = record.lost;
   return record;
@@ -302,8 +304,18 @@ Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
   if (previous_surfaces_.empty())
     built = make_surface_pyramid(pinhole_depth(previous_depth_), camera_, settings);
   const SurfacePyramid& prev = previous_surfaces_.empty() ? built : previous_surfaces_;
+  GreyPyramid built_grey;  // likewise
+  if (settings.photometric_weight > 0) {
+    estimate.grey = make_grey_pyramid(pinhole_grey(frame.features.pyramid.levels[0]),
+                                      estimate.surfaces, settings);
+    if (previous_grey_pyramid_.empty())
+      built_grey = make_grey_pyramid(pinhole_grey(previous_grey_), prev, settings);
+  }
+  const GreyPyramid& prev_grey =
+      previous_grey_pyramid_.empty() ? built_grey : previous_grey_pyramid_;
   const DenseAlignment dense =
-      point_to_plane(prev, estimate.surfaces, T_w_prev.inverse() * T_w_c_guess, box, settings);
+      point_to_plane(prev, estimate.surfaces, T_w_prev.inverse() * T_w_c_guess, box, settings,
+                     estimate.grey.empty() ? nullptr : &prev_grey, &estimate.grey);
   estimate.T_w_c = T_w_prev * dense.T_prev_curr;
   estimate.inliers = matches;  // unchecked: the motion-only BA sorts them
   estimate.support = dense.num_correspondences;
@@ -399,6 +411,13 @@ Keyframe Tracker::keyframe_from(const PreparedFrame& frame, const TrackedFrame& 
   keyframe.window_code = frame.window_code;
   for (const Match& m : inliers_) keyframe.point_ids[size_t(m.keypoint)] = m.point_id;
   return keyframe;
+}
+
+cv::Mat Tracker::pinhole_grey(const cv::Mat& grey) const {
+  if (undistort_map_x_.empty()) return grey;
+  cv::Mat out;
+  cv::remap(grey, out, undistort_map_x_, undistort_map_y_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  return out;
 }
 
 cv::Mat Tracker::pinhole_depth(const cv::Mat& depth) const {

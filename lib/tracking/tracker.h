@@ -11,6 +11,7 @@
 #include "core/settings/settings.h"
 #include "core/trajectory.h"
 #include "map/map.h"
+#include "tracking/photometric_equations.h"
 #include "tracking/prepared_frame.h"
 #include "tracking/surface_pyramid.h"
 #include "tracking/tracked_frame.h"
@@ -43,6 +44,7 @@ class Tracker {
     int support = 0;  // what the failure check weighs: inlier matches or dense pairs
     std::string failure;
     SurfacePyramid surfaces;  // the frame's, when dense alignment built them
+    GreyPyramid grey;         // likewise, when it weighed grey levels too
   };
 
   Eigen::Isometry3d predict_pose(double stamp) const;
@@ -67,6 +69,8 @@ class Tracker {
   void settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record);
   // The depth image resampled to pinhole geometry (unchanged for undistorted cameras).
   cv::Mat pinhole_depth(const cv::Mat& depth) const;
+  // The grey image likewise (bilinear: intensities, unlike depths, may be blended).
+  cv::Mat pinhole_grey(const cv::Mat& grey) const;
 
   Camera camera_;
   Settings settings_;
@@ -79,7 +83,9 @@ class Tracker {
   std::vector<StampedPose> poses_;    // every tracked frame, in order
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment
-  SurfacePyramid previous_surfaces_;  // the previous frame's, if dense alignment built them
+  cv::Mat previous_grey_;                      // level 0 of the ORB pyramid, for dense alignment
+  SurfacePyramid previous_surfaces_;   // the previous frame's, if dense alignment built them
+  GreyPyramid previous_grey_pyramid_;  // likewise
   bool previous_lost_ = false;
   bool velocity_known_ = false;  // the last two frames were tracked, not lost or re-acquired
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras
