@@ -32,11 +32,13 @@ struct LoopSettings {
   int neighbourhood_max_distance = 50;
   int min_neighbourhood_inliers = 40;
   double max_pose_error = 1.0;  // (paper) kappa, metres
-  // (ours) The map is corrected only when some accepted loop's measured pose differs from the
-  // map's by at least this (metres). Below it the loops measure noise: a refined loop pose is
-  // good to 1-3 mm (synthetic loop 200), and correcting by smaller gaps made synthetic
-  // lowtexture 400 worse (ATE 1.86 -> 2.12 mm, map median 4.8 -> 5.9 mm, loop gaps 3-14 mm).
-  double min_correction = 0.02;
+  // The map is corrected only when some accepted loop's measured pose differs from the map's
+  // by at least this (metres; ORB-SLAM2 always corrects: 0). 2 cm had helped before dense
+  // alignment weighed grey levels (lowtexture 400: ATE 1.86 -> 2.12 mm when correcting 3-14 mm
+  // gaps); with them, correcting every gap is as good or better on every preset (loop 600
+  // seed 2 6.38 -> 5.73 mm, lowtexture 600 seed 3 5.88 -> 2.37 mm, lowtexture 400 seed 1 3.26 ->
+  // 1.62 mm, lookalike 4.98 -> 2.12 mm).
+  double min_correction = 0;
   // (ORB-SLAM2) Essential graph: covisibility edges of at least this many shared points, and
   // the LM iterations of its optimisation.
   int essential_min_weight = 100;
