@@ -167,6 +167,7 @@ void visit_fields(GlobalBaSettings& s, V& v) {
   v.field("iterations", s.iterations, at_least(0));
   v.field("robust", s.robust);
   v.field("refine_iterations", s.refine_iterations, at_least(0));
+  v.field("fix_points_after_iterations", s.fix_points_after_iterations, at_least(-1));
 }
 
 template <class V>

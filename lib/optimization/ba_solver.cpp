@@ -176,6 +176,12 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   return true;
 }
 
+bool BaSolver::run_stage(int first, int iterations, bool robust, int fix_points_after) {
+  const int with_points =
+      fix_points_after < 0 ? iterations : std::clamp(fix_points_after - first, 0, iterations);
+  return run(with_points, robust, true) && run(iterations - with_points, robust, false);
+}
+
 bool BaSolver::run_poses_alone(int iterations, bool robust) {
   // With the points held, each free pose's observations involve that pose alone: the problem
   // is one independent 6-dof problem per pose, each solved by ceres::TinySolver (dense LM on

@@ -35,6 +35,11 @@ class BaSolver {
   // failed (the parameters are then those before the call).
   bool run(int iterations, bool robust, bool points_free);
 
+  // `iterations` LM iterations that are iterations first .. first + iterations - 1 of a
+  // schedule whose points are held fixed from iteration `fix_points_after` on (paper; < 0 =
+  // never): run() with the points free up to there, then with them held.
+  bool run_stage(int first, int iterations, bool robust, int fix_points_after);
+
   // Re-tests the inliers at the current parameters: one stays an inlier when its point is in
   // front of the camera and chi2 <= chi2_2d / chi2_3d. An outlier stays out (as in ORB-SLAM2,
   // whose excluded edges keep failing on their stale chi2), so the last run's observations are

@@ -48,34 +48,70 @@ TEST(GlobalBundleAdjustment, RecoversExactAnswerWithFirstPoseFixed) {
 
 TEST(GlobalBundleAdjustment, RobustModeRejectsGrossOutliers) {
   const TestScene scene = first_fixed_scene(0);
-  BaProblem problem = start_of(scene);
-  std::vector<int> moved;
-  for (size_t i = 7; i < problem.observations.size() && moved.size() < 20; i += 70) {
-    problem.observations[i].uv += Eigen::Vector2d(-40, 30);
-    moved.push_back(static_cast<int>(i));
-  }
-  GlobalBaSettings settings;
-  const BaReport report =
-      global_bundle_adjustment(problem, scene.intrinsics, scene.residual, settings);
-  ASSERT_TRUE(report.solved);
-  EXPECT_LE(report.iterations, settings.iterations + settings.refine_iterations);
-  EXPECT_GE(report.iterations, 2);
-  for (int i : moved) EXPECT_TRUE(report.outlier[i]) << i;
-  // A point seen twice cannot tell which view is wrong: a few partners may go too.
-  EXPECT_LE(report.num_outliers, static_cast<int>(moved.size()) + 5);
-  // No bias: the exact answer again, for the poses and every point still measured twice.
-  const PoseErrors errors = max_pose_errors(problem, scene.truth);
-  EXPECT_LT(errors.metres, 1e-3);
-  EXPECT_LT(errors.degrees, 0.01);
-  std::vector<int> inliers(problem.p_w.size());
-  for (size_t i = 0; i < problem.observations.size(); ++i) {
-    inliers[problem.observations[i].point] += !report.outlier[i];
-  }
-  for (size_t j = 0; j < problem.p_w.size(); ++j) {
-    if (inliers[j] >= 2) {
-      EXPECT_LT((problem.p_w[j] - scene.truth.p_w[j]).norm(), 1e-3) << j;
+  // Points free throughout (ORB-SLAM2) and held after two iterations (paper, the default).
+  for (const int fix_after : {-1, 2}) {
+    SCOPED_TRACE(fix_after);
+    BaProblem problem = start_of(scene);
+    std::vector<int> moved;
+    for (size_t i = 7; i < problem.observations.size() && moved.size() < 20; i += 70) {
+      problem.observations[i].uv += Eigen::Vector2d(-40, 30);
+      moved.push_back(static_cast<int>(i));
+    }
+    GlobalBaSettings settings;
+    settings.fix_points_after_iterations = fix_after;
+    const BaReport report =
+        global_bundle_adjustment(problem, scene.intrinsics, scene.residual, settings);
+    ASSERT_TRUE(report.solved);
+    EXPECT_LE(report.iterations, settings.iterations + settings.refine_iterations);
+    EXPECT_GE(report.iterations, 2);
+    for (int i : moved) EXPECT_TRUE(report.outlier[i]) << i;
+    // A point seen twice cannot tell which view is wrong: a few partners may go too.
+    EXPECT_LE(report.num_outliers, static_cast<int>(moved.size()) + 5);
+    if (fix_after >= 0) continue;  // the held points keep what two robust iterations left
+    // No bias: the exact answer again, for the poses and every point still measured twice.
+    const PoseErrors errors = max_pose_errors(problem, scene.truth);
+    EXPECT_LT(errors.metres, 1e-3);
+    EXPECT_LT(errors.degrees, 0.01);
+    std::vector<int> inliers(problem.p_w.size());
+    for (size_t i = 0; i < problem.observations.size(); ++i) {
+      inliers[problem.observations[i].point] += !report.outlier[i];
+    }
+    for (size_t j = 0; j < problem.p_w.size(); ++j) {
+      if (inliers[j] >= 2) {
+        EXPECT_LT((problem.p_w[j] - scene.truth.p_w[j]).norm(), 1e-3) << j;
+      }
     }
   }
+}
+
+TEST(GlobalBundleAdjustment, PointsHeldFixedAfterGivenIterations) {
+  const TestScene scene = first_fixed_scene(0.5);
+  const BaProblem start = start_of(scene);
+  GlobalBaSettings settings;
+  settings.fix_points_after_iterations = 2;
+  BaProblem after_two = start;
+  const BaReport report =
+      global_bundle_adjustment(after_two, scene.intrinsics, scene.residual, settings);
+  ASSERT_TRUE(report.solved);
+  EXPECT_GE(report.iterations, 3);  // the poses went on after the points stopped
+
+  // The points are exactly those of a run that stops after two iterations.
+  GlobalBaSettings two_iterations;
+  two_iterations.iterations = 2;
+  two_iterations.refine_iterations = 0;
+  two_iterations.fix_points_after_iterations = -1;
+  BaProblem stopped = start;
+  global_bundle_adjustment(stopped, scene.intrinsics, scene.residual, two_iterations);
+  EXPECT_EQ(std::memcmp(after_two.p_w.data(), stopped.p_w.data(),
+                        sizeof(Eigen::Vector3d) * start.p_w.size()),
+            0);
+  // But not the poses, which went on alone (after two iterations they are already as close to
+  // the truth as half a pixel allows).
+  bool poses_moved_on = false;
+  for (size_t i = 1; i < start.T_c_w.size(); ++i)
+    poses_moved_on |= !after_two.T_c_w[i].isApprox(stopped.T_c_w[i], 1e-12);
+  EXPECT_TRUE(poses_moved_on);
+  EXPECT_LT(max_pose_errors(after_two, scene.truth).metres, 0.02);
 }
 
 TEST(GlobalBundleAdjustment, RecoversAnswerUnderPixelNoise) {
