@@ -57,7 +57,8 @@ BaReport local_bundle_adjustment(BaProblem& problem, const BaIntrinsics& intrins
                                  const LocalBaSettings& settings);
 
 // Global BA: every pose and point (the caller fixes the first keyframe), iterations of LM,
-// robust with an outlier pass when settings.robust.
+// robust with an outlier pass when settings.robust; points held fixed after
+// fix_points_after_iterations, as in local BA.
 BaReport global_bundle_adjustment(BaProblem& problem, const BaIntrinsics& intrinsics,
                                   const BaResidualSettings& residual,
                                   const GlobalBaSettings& settings);
