@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <random>
 #include <vector>
@@ -142,6 +143,23 @@ inline double max_point_error(const BaProblem& a, const BaProblem& b) {
   double error = 0;
   for (size_t j = 0; j < a.p_w.size(); ++j) error = std::max(error, (a.p_w[j] - b.p_w[j]).norm());
   return error;
+}
+
+// Bit for bit: the same doubles, not merely close ones.
+inline bool bit_identical(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return std::memcmp(a.matrix().data(), b.matrix().data(), sizeof(double) * 16) == 0;
+}
+
+inline bool bit_identical_points(const BaProblem& a, const BaProblem& b) {
+  return a.p_w.size() == b.p_w.size() &&
+         std::memcmp(a.p_w.data(), b.p_w.data(), sizeof(Eigen::Vector3d) * a.p_w.size()) == 0;
+}
+
+inline bool bit_identical(const BaProblem& a, const BaProblem& b) {
+  if (a.T_c_w.size() != b.T_c_w.size()) return false;
+  for (size_t i = 0; i < a.T_c_w.size(); ++i)
+    if (!bit_identical(a.T_c_w[i], b.T_c_w[i])) return false;
+  return bit_identical_points(a, b);
 }
 
 }  // namespace slamkit

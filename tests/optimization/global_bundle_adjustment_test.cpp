@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstring>
 
 #include "optimization/ba_test_scene.h"
 #include "optimization/bundle_adjustment.h"
@@ -40,9 +39,7 @@ TEST(GlobalBundleAdjustment, RecoversExactAnswerWithFirstPoseFixed) {
     EXPECT_LT(errors.metres, 1e-3);
     EXPECT_LT(errors.degrees, 0.01);
     EXPECT_LT(max_point_error(problem, scene.truth), 1e-3);
-    EXPECT_EQ(
-        std::memcmp(problem.T_c_w[0].matrix().data(), first.matrix().data(), sizeof(double) * 16),
-        0);
+    EXPECT_TRUE(bit_identical(problem.T_c_w[0], first));
   }
 }
 
@@ -102,14 +99,12 @@ TEST(GlobalBundleAdjustment, PointsHeldFixedAfterGivenIterations) {
   two_iterations.fix_points_after_iterations = -1;
   BaProblem stopped = start;
   global_bundle_adjustment(stopped, scene.intrinsics, scene.residual, two_iterations);
-  EXPECT_EQ(std::memcmp(after_two.p_w.data(), stopped.p_w.data(),
-                        sizeof(Eigen::Vector3d) * start.p_w.size()),
-            0);
+  EXPECT_TRUE(bit_identical_points(after_two, stopped));
   // But not the poses, which went on alone (after two iterations they are already as close to
   // the truth as half a pixel allows).
   bool poses_moved_on = false;
   for (size_t i = 1; i < start.T_c_w.size(); ++i)
-    poses_moved_on |= !after_two.T_c_w[i].isApprox(stopped.T_c_w[i], 1e-12);
+    poses_moved_on |= !bit_identical(after_two.T_c_w[i], stopped.T_c_w[i]);
   EXPECT_TRUE(poses_moved_on);
   EXPECT_LT(max_pose_errors(after_two, scene.truth).metres, 0.02);
 }
@@ -133,14 +128,9 @@ TEST(GlobalBundleAdjustment, RunsAreBitIdentical) {
   const GlobalBaSettings settings;
   global_bundle_adjustment(first, scene.intrinsics, scene.residual, settings);
   global_bundle_adjustment(second, scene.intrinsics, scene.residual, settings);
-  for (size_t i = 0; i < first.T_c_w.size(); ++i) {
-    EXPECT_EQ(std::memcmp(first.T_c_w[i].matrix().data(), second.T_c_w[i].matrix().data(),
-                          sizeof(double) * 16),
-              0);
-  }
-  EXPECT_EQ(
-      std::memcmp(first.p_w.data(), second.p_w.data(), sizeof(Eigen::Vector3d) * first.p_w.size()),
-      0);
+  for (size_t i = 0; i < first.T_c_w.size(); ++i)
+    EXPECT_TRUE(bit_identical(first.T_c_w[i], second.T_c_w[i])) << i;
+  EXPECT_TRUE(bit_identical_points(first, second));
 }
 
 TEST(GlobalBundleAdjustment, NoFreePoseOrNoObservationsIsNotSolved) {
