@@ -11,12 +11,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <numeric>
 #include <vector>
 
 #include "core/settings/settings.h"
+#include "core/stopwatch.h"
 #include "datasets/synth/room_layout.h"
 #include "datasets/synth/sequence_writer.h"
 #include "datasets/synth/trajectory_presets.h"
@@ -28,18 +28,6 @@ namespace fs = std::filesystem;
 using namespace slamkit;
 
 namespace {
-
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
-
-double wall_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -69,12 +57,13 @@ void report(const TumSequence& seq, int threads) {
   Eigen::Isometry3d T_prev_curr_guess = truth(seq, first - 1).inverse() * truth(seq, first);
   for (size_t i = first + 1; i <= last; ++i) {
     const cv::Mat depth = seq.load(i).depth;
-    const double w0 = wall_ms(), c0 = cpu_ms();
+    Stopwatch wall_watch;
+    CpuStopwatch cpu_watch;
     SurfacePyramid curr = make_surface_pyramid(depth, seq.camera(), settings);
-    surfaces_cpu.push_back(cpu_ms() - c0);
+    surfaces_cpu.push_back(cpu_watch.lap());
     const DenseAlignment a = point_to_plane(prev, curr, T_prev_curr_guess, cv::Rect(), settings);
-    wall.push_back(wall_ms() - w0);
-    cpu.push_back(cpu_ms() - c0);
+    wall.push_back(wall_watch.lap());
+    cpu.push_back(surfaces_cpu.back() + cpu_watch.lap());
     iterations += a.iterations;
     const Eigen::Isometry3d T_true = truth(seq, i - 1).inverse() * truth(seq, i);
     err_mm.push_back(1e3 * (T_true.inverse() * a.T_prev_curr).translation().norm());

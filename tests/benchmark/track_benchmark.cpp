@@ -2,7 +2,9 @@
 // synthetic 600-frame `desk` and `loop` sequences rendered for the run, the front end alone
 // (`slamkit track`: per-stage median milliseconds per frame, frames per second) and the whole
 // pipeline (`slamkit run`: the wall time of each stage, decode to map.ply, frames per second,
-// the loop pass per keyframe), and the ratio of the two wall times.
+// the loop pass per keyframe), and the ratio of the two wall times. Each also reports its
+// process CPU time: at n threads no schedule can take less wall time than CPU / n, which
+// bounds the ratio that any overlap of the stages could reach.
 //   cmake --build build --target benchmark        (or: build/tests/benchmark/slamkit_benchmark)
 #include <omp.h>
 
@@ -32,11 +34,17 @@ double decode_floor_ms(const TumSequence& sequence, int threads) {
   return watch.lap() / double(sequence.size());
 }
 
-// Returns the wall seconds, decode to trajectory.
-double report_front_end(const std::string& name, const TumSequence& sequence, int threads) {
+struct Seconds {
+  double wall = 0, cpu = 0;
+};
+
+// Returns the wall and CPU seconds, decode to trajectory.
+Seconds report_front_end(const std::string& name, const TumSequence& sequence, int threads) {
   Settings settings;
   settings.pipeline.threads = threads;
+  CpuStopwatch cpu;
   const RunResult result = track_sequence(sequence, front_end_only(settings));
+  const double cpu_seconds = cpu.lap() / 1000.0;
   const TimingSummary timing = summarise_timing(result);
   std::printf("\n%s, front end (track): %zu frames, %d thread(s)\n", name.c_str(),
               result.frames.size(), result.threads);
@@ -46,25 +54,27 @@ double report_front_end(const std::string& name, const TumSequence& sequence, in
                 s.max_ms);
   std::printf("  tracking (all after decode) median %.2f ms/frame\n", timing.tracking_median_ms);
   std::printf("  wall: prepare %.2f s (parallel, beside tracking), track %.2f s; %.2f s in all "
-              "-> %.1f frames/s\n",
+              "-> %.1f frames/s; CPU %.2f s\n",
               result.seconds.prepare, result.seconds.track, result.seconds.total,
-              timing.frames_per_second);
+              timing.frames_per_second, cpu_seconds);
   const double floor_ms = decode_floor_ms(sequence, result.threads);
   const double end_to_end_ms = 1000 * result.seconds.total / double(result.frames.size());
   std::printf(
       "  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
       "ms/frame: %.2fx the floor\n",
       floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
-  return result.seconds.total;
+  return {result.seconds.total, cpu_seconds};
 }
 
-// Returns the wall seconds, decode to map.ply.
-double report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {
+// Returns the wall and CPU seconds, decode to map.ply.
+Seconds report_pipeline(const std::string& name, const TumSequence& sequence, int threads) {
   Settings settings;
   settings.pipeline.threads = threads;
   settings.pipeline.evaluate = false;
   const fs::path out = fs::temp_directory_path() / "slamkit_benchmark_run";
+  CpuStopwatch cpu;
   const RunResult result = run_batch(sequence, settings, out, name);
+  const double cpu_seconds = cpu.lap() / 1000.0;
   const StageTimes& t = result.seconds;
   int local_runs = 0;
   double wait = 0;
@@ -90,16 +100,21 @@ double report_pipeline(const std::string& name, const TumSequence& sequence, int
   std::printf("  fusion     %6.2f s  (%zu frames -> %zu points)\n", t.fusion, result.fusion.frames,
               result.fusion.after_outlier_removal);
   std::printf("  write      %6.2f s\n", t.write);
-  std::printf("  total      %6.2f s  -> %.1f frames/s, decode to map.ply\n", t.total,
-              double(result.frames.size()) / t.total);
+  std::printf("  total      %6.2f s  -> %.1f frames/s, decode to map.ply; CPU %.2f s\n", t.total,
+              double(result.frames.size()) / t.total, cpu_seconds);
   fs::remove_all(out);
-  return t.total;
+  return {t.total, cpu_seconds};
 }
 
 void report(const std::string& name, const TumSequence& sequence, int threads) {
-  const double track = report_front_end(name, sequence, threads);
-  const double run = report_pipeline(name, sequence, threads);
-  std::printf("  run / track wall time: %.2fx\n", run / track);
+  const Seconds track = report_front_end(name, sequence, threads);
+  const Seconds run = report_pipeline(name, sequence, threads);
+  const int cores = threads > 0 ? threads : omp_get_num_procs();
+  std::printf("  run / track wall time: %.2fx\n", run.wall / track.wall);
+  std::printf("  CPU: track %.2f s, run %.2f s (+%.2f s); at %d thread(s) run needs at least "
+              "%.2f s, %.2fx track's wall time\n",
+              track.cpu, run.cpu, run.cpu - track.cpu, cores, run.cpu / cores,
+              run.cpu / cores / track.wall);
 }
 
 void report_synthetic(synth::Preset preset, const std::string& name, int threads) {
