@@ -36,6 +36,7 @@ double decode_floor_ms(const TumSequence& sequence, int threads) {
 
 struct Seconds {
   double wall = 0, cpu = 0;
+  int threads = 1;  // as the run used them
 };
 
 // Returns the wall and CPU seconds, decode to trajectory.
@@ -63,7 +64,7 @@ Seconds report_front_end(const std::string& name, const TumSequence& sequence, i
       "  decode floor %.2f ms/frame (decode alone on %d thread(s)); end to end %.2f "
       "ms/frame: %.2fx the floor\n",
       floor_ms, result.threads, end_to_end_ms, end_to_end_ms / floor_ms);
-  return {result.seconds.total, cpu_seconds};
+  return {result.seconds.total, cpu_seconds, result.threads};
 }
 
 // Returns the wall and CPU seconds, decode to map.ply.
@@ -103,18 +104,17 @@ Seconds report_pipeline(const std::string& name, const TumSequence& sequence, in
   std::printf("  total      %6.2f s  -> %.1f frames/s, decode to map.ply; CPU %.2f s\n", t.total,
               double(result.frames.size()) / t.total, cpu_seconds);
   fs::remove_all(out);
-  return {t.total, cpu_seconds};
+  return {t.total, cpu_seconds, result.threads};
 }
 
 void report(const std::string& name, const TumSequence& sequence, int threads) {
   const Seconds track = report_front_end(name, sequence, threads);
   const Seconds run = report_pipeline(name, sequence, threads);
-  const int cores = threads > 0 ? threads : omp_get_num_procs();
   std::printf("  run / track wall time: %.2fx\n", run.wall / track.wall);
   std::printf("  CPU: track %.2f s, run %.2f s (+%.2f s); at %d thread(s) run needs at least "
               "%.2f s, %.2fx track's wall time\n",
-              track.cpu, run.cpu, run.cpu - track.cpu, cores, run.cpu / cores,
-              run.cpu / cores / track.wall);
+              track.cpu, run.cpu, run.cpu - track.cpu, run.threads, run.cpu / run.threads,
+              run.cpu / run.threads / track.wall);
 }
 
 void report_synthetic(synth::Preset preset, const std::string& name, int threads) {
