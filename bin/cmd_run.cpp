@@ -66,7 +66,7 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
         "fused map   %zu frames: %zu points raw, %zu after the %.0f mm voxel grid, %zu after "
         "outlier removal, %.2f s\n",
         result.fusion.frames, result.fusion.raw_points, result.fusion.after_voxel_grid,
-        settings.fusion.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
+        settings.map.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
   if (seq.groundtruth() && settings.pipeline.evaluate)
     std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after local and global BA\n",
                 1000 * eval::ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),
@@ -83,7 +83,7 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
 void evaluate_run_map(const TumSequence& seq, const Settings& settings,
                       const std::filesystem::path& out) {
   synth::MapQualitySettings quality_settings;
-  quality_settings.max_depth = settings.fusion.max_depth;
+  quality_settings.max_depth = settings.map.max_depth;
   const std::optional<synth::MapQuality> quality =
       evaluate_map(out / "map.ply", seq.folder(), out / "trajectory.txt", quality_settings);
   if (!quality) return;
@@ -99,7 +99,7 @@ void run(const RunArgs& args) {
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
   if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
-  if (args.ascii) settings.fusion.binary_ply = false;
+  if (args.ascii) settings.map.binary_ply = false;
   if (!args.loops) settings.loop.enabled = false;
   std::optional<Vocabulary> vocabulary;
   if (!args.vocabulary_file.empty()) vocabulary = load_vocabulary(args.vocabulary_file);

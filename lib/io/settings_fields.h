@@ -174,8 +174,8 @@ template <class V>
 void visit_fields(OptimizationSettings& s, V& v) {
   v.field("min_keyframe_points", s.min_keyframe_points, at_least(0));
   v.section("residual", s.residual);
-  v.section("local_ba", s.local);
-  v.section("global_ba", s.global);
+  v.section("local_ba", s.local_ba);
+  v.section("global_ba", s.global_ba);
 }
 
 template <class V>
@@ -242,7 +242,7 @@ void visit_fields(Settings& s, V& v) {
   v.section("mapping", s.mapping);
   v.section("optimization", s.optimization);
   v.section("loop", s.loop);
-  v.section("map", s.fusion);
+  v.section("map", s.map);
   v.section("vocabulary", s.vocabulary);
   v.section("pipeline", s.pipeline);
 }

@@ -36,7 +36,7 @@ int LocalMapper::insert_keyframe(Keyframe keyframe, double motion) {
   report.culled_points = cull_recent_points(id);
   if (settings_.mapping.fuse_duplicates) report.fused_points = fuse_duplicates(id);
 
-  const LocalBaSettings& ba = settings_.optimization.local;
+  const LocalBaSettings& ba = settings_.optimization.local_ba;
   if (ba.enabled && id >= 2 && motion >= ba.min_motion &&
       id % std::max(1, ba.every_keyframes) == 0) {
     pending_ = std::make_unique<MapBaJob>(

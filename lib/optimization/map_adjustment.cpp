@@ -53,7 +53,7 @@ std::vector<int> good_points_of(const Map& map, const std::vector<int>& keyframe
 MapBaJob MapBaJob::local_window(const Map& map, int keyframe, const Camera& camera,
                                 const OptimizationSettings& settings) {
   std::vector<int> window = {keyframe};
-  for (int k : map.best_covisible(keyframe, settings.local.max_covisible_keyframes))
+  for (int k : map.best_covisible(keyframe, settings.local_ba.max_covisible_keyframes))
     window.push_back(k);
   return MapBaJob(map, constrained(map, window, settings), camera, settings, true);
 }
@@ -82,7 +82,7 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
   for (int k : free_keyframes) add_pose(k, false);
   const std::vector<int> points = good_points_of(map, free_keyframes);
   if (local) {
-    for (int k : fixed_observers(map, points, pose_of, settings.local.max_fixed_keyframes))
+    for (int k : fixed_observers(map, points, pose_of, settings.local_ba.max_fixed_keyframes))
       add_pose(k, true);
   }
   const PyramidGeometry& pyramid = map.pyramid();
@@ -110,8 +110,8 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
 void MapBaJob::solve() {
   report_ =
       local_
-          ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.local)
-          : global_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.global);
+          ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.local_ba)
+          : global_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.global_ba);
 }
 
 MapAdjustment MapBaJob::apply(Map& map) const {

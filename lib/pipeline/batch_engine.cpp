@@ -75,9 +75,9 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   std::future<std::pair<std::vector<PreparedFrame>, double>> next;
   if (sequence.size() > 0) next = std::async(policy, prepare, size_t(0));
   size_t last_keyframe_frame = 0;
-  const bool keep_samples = settings.fusion.enabled && settings.fusion.frame_step <= 0;
+  const bool keep_samples = settings.map.enabled && settings.map.frame_step <= 0;
   size_t cached_bytes = 0;
-  const size_t cache_limit = size_t(settings.fusion.keyframe_cache_mb) << 20;
+  const size_t cache_limit = size_t(settings.map.keyframe_cache_mb) << 20;
   // Culled keyframes stay out of the fused map: their samples make room for later ones.
   auto release_culled_samples = [&] {
     if (!settings.mapping.cull_keyframes) return;  // no scan per keyframe when nothing is culled
@@ -104,14 +104,14 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
             result.tracked_poses.begin() + long(last_keyframe_frame), result.tracked_poses.end());
         since_keyframe.push_back(record.T_w_c);
         const double motion =
-            quasi_static_motion(since_keyframe, settings.optimization.local.motion_rotation_weight);
+            quasi_static_motion(since_keyframe, settings.optimization.local_ba.motion_rotation_weight);
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
         release_culled_samples();
         std::shared_ptr<const FusionSamples> samples;
         if (keep_samples && cached_bytes < cache_limit) {
           samples = std::make_shared<const FusionSamples>(
-              sample_for_fusion(frame.rgb, frame.depth, settings.fusion.pixel_stride));
+              sample_for_fusion(frame.rgb, frame.depth, settings.map.pixel_stride));
           cached_bytes += samples->bytes();
         }
         result.keyframe_samples.push_back(std::move(samples));
@@ -135,7 +135,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   for (const MappingReport& r : result.keyframe_reports)
     result.seconds.local_ba += r.ba.report.seconds;
   // Local BA's corrections reach the frames tracked before them.
-  if (settings.optimization.local.enabled) reanchor_frames(result);
+  if (settings.optimization.local_ba.enabled) reanchor_frames(result);
   result.seconds.total = total.lap() / 1000.0;
   return result;
 }
@@ -148,7 +148,7 @@ void close_loops_of(RunResult& result, const Camera& camera, const Settings& set
 }
 
 void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings) {
-  if (!settings.optimization.global.enabled || result.map.keyframes().size() < 2) return;
+  if (!settings.optimization.global_ba.enabled || result.map.keyframes().size() < 2) return;
   Stopwatch watch;
   result.global_ba = adjust_whole_map(result.map, camera, settings.optimization);
   result.global_ba_run = result.global_ba.report.solved;
@@ -164,7 +164,7 @@ void reanchor_frames(RunResult& result) {
 
 void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
                     const std::filesystem::path& ply_path, const ProgressCallback& progress) {
-  if (!settings.fusion.enabled) return;
+  if (!settings.map.enabled) return;
   Stopwatch watch;
   std::vector<FusionFrame> keyframes;
   for (size_t k = 0; k < result.map.keyframes().size(); ++k) {
@@ -175,16 +175,16 @@ void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settin
          k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});
   }
   std::vector<FusionFrame> frames;
-  if (settings.fusion.frame_step <= 0) {
+  if (settings.map.frame_step <= 0) {
     frames = keyframes;
   } else {
-    for (size_t i = 0; i < result.frames.size(); i += size_t(settings.fusion.frame_step))
+    for (size_t i = 0; i < result.frames.size(); i += size_t(settings.map.frame_step))
       if (!result.frames[i].lost)
         frames.push_back({result.frames[i].index, result.frames[i].T_w_c, nullptr});
   }
   if (frames.empty()) return;
   result.fusion =
-      fuse_map(sequence, frames, settings.fusion, ply_path, [&](size_t done, size_t total) {
+      fuse_map(sequence, frames, settings.map, ply_path, [&](size_t done, size_t total) {
         if (progress) progress("map", done, total);
       });
   result.keyframe_samples.clear();  // freed with `keyframes` and `frames` at the return

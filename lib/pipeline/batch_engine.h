@@ -77,7 +77,7 @@ void adjust_globally(RunResult& result, const Camera& camera, const Settings& se
 // its parent's, as ORB-SLAM2 writes its trajectory.
 void reanchor_frames(RunResult& result);
 
-// The fused map of the final poses, written to `ply_path` (settings.fusion).
+// The fused map of the final poses, written to `ply_path` (settings.map).
 void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
                     const std::filesystem::path& ply_path, const ProgressCallback& progress = {});
 

@@ -243,7 +243,7 @@ void write_run_outputs(const fs::path& dir, const std::string& sequence_name, co
                                : "lost frames at the motion model's pose";
   write_tum_trajectory(dir / "trajectory.txt", result.trajectory(),
                        "slamkit trajectory of " + sequence_name + " (T_w_c; " + lost + ")");
-  if (settings.optimization.local.enabled || result.global_ba_run)
+  if (settings.optimization.local_ba.enabled || result.global_ba_run)
     write_tum_trajectory(dir / "trajectory_tracked.txt", result.tracked_trajectory(),
                          "slamkit trajectory of " + sequence_name +
                              " as tracked, before the back end's corrections; " + lost);

@@ -24,10 +24,10 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
 }
 
 Settings front_end_only(Settings settings) {
-  settings.optimization.local.enabled = false;
-  settings.optimization.global.enabled = false;
+  settings.optimization.local_ba.enabled = false;
+  settings.optimization.global_ba.enabled = false;
   settings.loop.enabled = false;
-  settings.fusion.enabled = false;
+  settings.map.enabled = false;
   return settings;
 }
 

@@ -45,7 +45,7 @@ struct World {
 
 Settings without_ba() {
   Settings s;
-  s.optimization.local.enabled = false;
+  s.optimization.local_ba.enabled = false;
   return s;
 }
 
@@ -125,7 +125,7 @@ TEST(LocalMapper, PointsSeenByOneKeyframeAreCulledAfterTwoMore) {
 std::vector<int> culled_after_five_views(int observers, int later_octave) {
   const World world(60);
   Settings settings;
-  settings.optimization.local.min_motion = 1e9;
+  settings.optimization.local_ba.min_motion = 1e9;
   settings.mapping.cull_keyframes = true;
   settings.mapping.culling_observers = observers;
   Map map;

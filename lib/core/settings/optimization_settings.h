@@ -74,8 +74,8 @@ struct OptimizationSettings {
   // its global BA); local BA holds them fixed.
   int min_keyframe_points = 100;
   BaResidualSettings residual;
-  LocalBaSettings local;
-  GlobalBaSettings global;
+  LocalBaSettings local_ba;
+  GlobalBaSettings global_ba;
 };
 
 }  // namespace slamkit

@@ -22,7 +22,7 @@ struct Settings {
   MappingSettings mapping;
   OptimizationSettings optimization;
   LoopSettings loop;
-  FusionSettings fusion;
+  FusionSettings map;
   VocabularySettings vocabulary;
   PipelineSettings pipeline;
 };
