@@ -8,12 +8,12 @@
 #include <optional>
 
 #include "bin/command.h"
-#include "bin/eval_run.h"
 #include "eval/association.h"
 #include "eval/ate.h"
 #include "eval/compare.h"
 #include "eval/coverage.h"
 #include "eval/error_csv.h"
+#include "eval/evaluation_run.h"
 #include "eval/metrics_json.h"
 #include "eval/plotting.h"
 #include "eval/rpe.h"
@@ -26,6 +26,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// A requested plot that was not drawn ends the command with exit code 1.
+void evaluate_or_exit(eval::EvaluationRequest& request, bool do_ate, bool do_rpe) {
+  if (!eval::run_evaluation(request, do_ate, do_rpe)) throw ExitCode{1};
+}
+
 struct CompareArgs {
   std::vector<std::string> runs;
   std::string out_dir;
@@ -34,7 +39,7 @@ struct CompareArgs {
   bool quiet = false;
 };
 
-void add_common_options(CLI::App* cmd, EvalArgs& a) {
+void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (TUM format)")->required();
   cmd->add_option("estimate", a.est, "Estimated trajectory (TUM format)")->required();
   cmd->add_option("--convention", a.convention,
@@ -70,7 +75,7 @@ void add_common_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_flag("--quiet", a.quiet, "Print nothing (errors still go to stderr)");
 }
 
-void add_ate_options(CLI::App* cmd, EvalArgs& a) {
+void add_ate_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--align", a.align,
                   "se3 (Horn/Umeyama), sim3, translation or none; sim3 also scales the "
                   "estimate for RPE")
@@ -82,7 +87,7 @@ void add_ate_options(CLI::App* cmd, EvalArgs& a) {
   cmd->add_option("--planes", a.planes, "Trajectory plot planes, e.g. xy,xz,yz")
       ->check(CLI::Validator(
           [](std::string& text) {
-            for (const std::string& plane : split_planes(text))
+            for (const std::string& plane : eval::split_planes(text))
               if (plane != "xy" && plane != "xz" && plane != "yz")
                 return "unknown plane '" + plane + "' (use xy, xz or yz)";
             return std::string();
@@ -91,7 +96,7 @@ void add_ate_options(CLI::App* cmd, EvalArgs& a) {
       ->capture_default_str();
 }
 
-void add_rpe_options(CLI::App* cmd, EvalArgs& a) {
+void add_rpe_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--delta", a.rpe.delta, "Pair distance, in --unit")->capture_default_str();
   cmd->add_option("--unit", a.unit, "s (seconds), f (frames), m (metres), deg")
       ->capture_default_str();
@@ -140,15 +145,15 @@ const bool kRegistered = register_command([](CLI::App& root) {
       root.add_subcommand("eval", "Evaluate a trajectory against groundtruth (ATE, RPE)");
   eval_cmd->require_subcommand(1);
 
-  auto ate = std::make_shared<EvalArgs>();
+  auto ate = std::make_shared<eval::EvaluationRequest>();
   CLI::App* ate_cmd = eval_cmd->add_subcommand(
       "ate", "Absolute trajectory error after alignment (the benchmark's evaluate_ate.py)");
   add_common_options(ate_cmd, *ate);
   add_ate_options(ate_cmd, *ate);
   ate_cmd->add_option("--csv", ate->ate_csv, "Per-pose error CSV (errors.csv)");
-  ate_cmd->callback([ate] { run_eval(*ate, true, false); });
+  ate_cmd->callback([ate] { evaluate_or_exit(*ate, true, false); });
 
-  auto rpe = std::make_shared<EvalArgs>();
+  auto rpe = std::make_shared<eval::EvaluationRequest>();
   CLI::App* rpe_cmd = eval_cmd->add_subcommand(
       "rpe", "Relative pose error over a fixed delta (the benchmark's evaluate_rpe.py)");
   add_common_options(rpe_cmd, *rpe);
@@ -161,15 +166,15 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::IsMember({"se3", "sim3", "translation", "none"}))
       ->capture_default_str();
   rpe_cmd->add_option("--csv", rpe->rpe_csv, "Per-pair error CSV (rpe.csv)");
-  rpe_cmd->callback([rpe] { run_eval(*rpe, false, true); });
+  rpe_cmd->callback([rpe] { evaluate_or_exit(*rpe, false, true); });
 
-  auto all = std::make_shared<EvalArgs>();
+  auto all = std::make_shared<eval::EvaluationRequest>();
   CLI::App* all_cmd =
       eval_cmd->add_subcommand("all", "ATE and RPE in one run (files read once; CSVs go to --out)");
   add_common_options(all_cmd, *all);
   add_ate_options(all_cmd, *all);
   add_rpe_options(all_cmd, *all);
-  all_cmd->callback([all] { run_eval(*all, true, true); });
+  all_cmd->callback([all] { evaluate_or_exit(*all, true, true); });
 
   auto cmp = std::make_shared<CompareArgs>();
   CLI::App* cmp_cmd = eval_cmd->add_subcommand(

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "bin/command.h"
-#include "bin/map_evaluation.h"
+#include "eval/run/map_evaluation.h"
 #include "core/error.h"
 #include "eval/metrics_json.h"
 
@@ -26,14 +26,14 @@ void run_map_eval(const MapEvalArgs& args) {
   std::optional<fs::path> trajectory;
   if (!args.trajectory.empty()) trajectory = args.trajectory;
   const std::optional<synth::MapQuality> q =
-      evaluate_map(args.map, args.sequence, trajectory, args.settings);
+      eval::evaluate_map(args.map, args.sequence, trajectory, args.settings);
   if (!q)
     throw_input_error(args.sequence, std::string("not a synthetic sequence (no ") +
                                          synth::kSyntheticInfoFile +
                                          "): map-eval needs the true scene, made by `slamkit "
                                          "synth`");
   std::printf("map-eval    %s against %s\n", args.map.c_str(), args.sequence.c_str());
-  print_map_quality(*q);
+  eval::print_map_quality(*q);
   if (!args.json_path.empty()) {
     nlohmann::json update;
     synth::add_map_quality_json(update, *q);

@@ -5,11 +5,10 @@
 #include <memory>
 
 #include "bin/command.h"
-#include "bin/map_evaluation.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
 #include "eval/ate.h"
-#include "eval/metrics_json.h"
+#include "eval/run/run_evaluation.h"
 #include "io/settings_yaml.h"
 #include "loop/vocabulary_file.h"
 #include "pipeline/run_output.h"
@@ -79,20 +78,6 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
       double(result.frames.size()) / t.total);
 }
 
-// On a synthetic sequence, the map's accuracy and completeness go into metrics.json.
-void evaluate_run_map(const TumSequence& seq, const Settings& settings,
-                      const std::filesystem::path& out) {
-  synth::MapQualitySettings quality_settings;
-  quality_settings.max_depth = settings.map.max_depth;
-  const std::optional<synth::MapQuality> quality =
-      evaluate_map(out / "map.ply", seq.folder(), out / "trajectory.txt", quality_settings);
-  if (!quality) return;
-  print_map_quality(*quality);
-  nlohmann::json update;
-  synth::add_map_quality_json(update, *quality);
-  eval::merge_into_metrics_file(out / "metrics.json", update);
-}
-
 void run(const RunArgs& args) {
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
@@ -115,9 +100,9 @@ void run(const RunArgs& args) {
     print_tracking_summary(seq, result);
     print_back_end_summary(seq, settings, result);
     if (settings.pipeline.evaluate) {
-      evaluate_run_folder(seq, args.out, args.plot);
-      if (result.loop_pass.ran) evaluate_run_loops(seq, args.out);
-      if (result.fusion.frames > 0) evaluate_run_map(seq, settings, args.out);
+      eval::evaluate_run_folder(seq, args.out, args.plot);
+      if (result.loop_pass.ran) eval::evaluate_run_loops(seq, args.out);
+      if (result.fusion.frames > 0) eval::evaluate_run_map(seq, settings.map.max_depth, args.out);
     }
     std::printf("output      %s\n", args.out.c_str());
     if (result.fusion.frames > 0)

@@ -7,6 +7,7 @@
 #include "bin/command.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
+#include "eval/run/run_evaluation.h"
 #include "io/settings_yaml.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
@@ -45,7 +46,7 @@ void track(const TrackArgs& args) {
     write_timing_json(args.out, name, result);
     print_tracking_summary(seq, result);
     std::printf("output      %s\n", args.out.c_str());
-    if (settings.pipeline.evaluate) evaluate_run_folder(seq, args.out, args.plot);
+    if (settings.pipeline.evaluate) eval::evaluate_run_folder(seq, args.out, args.plot);
     return result.seconds;
   });
 }

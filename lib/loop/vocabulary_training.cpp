@@ -52,8 +52,8 @@ std::vector<VocabularyNode> build_tree(const std::vector<cv::Mat>& images,
         next.push_back({NodeId(nodes.size()), {}});
         nodes.push_back({split.node, centre, 0});
       }
-      for (size_t i = 0; i < split.members.size(); ++i)
-        next[first + c.assignment[i]].members.push_back(split.members[i]);
+      for (size_t m = 0; m < split.members.size(); ++m)
+        next[first + c.assignment[m]].members.push_back(split.members[m]);
     }
     level = std::move(next);
   }

@@ -75,17 +75,10 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   std::future<std::pair<std::vector<PreparedFrame>, double>> next;
   if (sequence.size() > 0) next = std::async(policy, prepare, size_t(0));
   size_t last_keyframe_frame = 0;
-  const bool keep_samples = settings.map.enabled && settings.map.frame_step <= 0;
-  size_t cached_bytes = 0;
-  const size_t cache_limit = size_t(settings.map.keyframe_cache_mb) << 20;
-  // Culled keyframes stay out of the fused map: their samples make room for later ones.
+  result.keyframe_samples = KeyframeSamples(settings.map);
   auto release_culled_samples = [&] {
     if (!settings.mapping.cull_keyframes) return;  // no scan per keyframe when nothing is culled
-    for (size_t k = 0; k < result.keyframe_samples.size(); ++k)
-      if (result.keyframe_samples[k] && result.map.keyframe(int(k)).culled) {
-        cached_bytes -= result.keyframe_samples[k]->bytes();
-        result.keyframe_samples[k].reset();
-      }
+    result.keyframe_samples.release([&](size_t k) { return result.map.keyframe(int(k)).culled; });
   };
   for (size_t begin = 0; begin < sequence.size(); begin += chunk) {
     auto [frames, prepare_seconds] = next.get();
@@ -108,13 +101,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
         release_culled_samples();
-        std::shared_ptr<const FusionSamples> samples;
-        if (keep_samples && cached_bytes < cache_limit) {
-          samples = std::make_shared<const FusionSamples>(
-              sample_for_fusion(frame.rgb, frame.depth, settings.map.pixel_stride));
-          cached_bytes += samples->bytes();
-        }
-        result.keyframe_samples.push_back(std::move(samples));
+        result.keyframe_samples.add(frame.rgb, frame.depth);
         record.T_ref_c = Eigen::Isometry3d::Identity();
         timing.mapping_ms = mapper.reports().back().ms;
         last_keyframe_frame = result.frames.size();
@@ -135,62 +122,50 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
   for (const MappingReport& r : result.keyframe_reports)
     result.seconds.local_ba += r.ba.report.seconds;
   // Local BA's corrections reach the frames tracked before them.
-  if (settings.optimization.local_ba.enabled) reanchor_frames(result);
+  if (settings.optimization.local_ba.enabled) reanchor_frames(result.map, result.frames);
   result.seconds.total = total.lap() / 1000.0;
   return result;
 }
 
-void close_loops_of(RunResult& result, const Camera& camera, const Settings& settings,
-                    const Vocabulary* vocabulary) {
-  Stopwatch watch;
-  result.loop_pass = close_loops(result.map, camera, settings, vocabulary);
-  result.seconds.loops = watch.lap() / 1000.0;
+std::optional<MapAdjustment> adjust_globally(Map& map, const Camera& camera,
+                                             const Settings& settings) {
+  if (!settings.optimization.global_ba.enabled || map.keyframes().size() < 2) return std::nullopt;
+  return adjust_whole_map(map, camera, settings.optimization);
 }
 
-void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings) {
-  if (!settings.optimization.global_ba.enabled || result.map.keyframes().size() < 2) return;
-  Stopwatch watch;
-  result.global_ba = adjust_whole_map(result.map, camera, settings.optimization);
-  result.global_ba_run = result.global_ba.report.solved;
-  result.seconds.global_ba = watch.lap() / 1000.0;
-}
-
-void reanchor_frames(RunResult& result) {
-  result.map.place_culled_keyframes();
-  for (TrackedFrame& f : result.frames)
+void reanchor_frames(Map& map, std::vector<TrackedFrame>& frames) {
+  map.place_culled_keyframes();
+  for (TrackedFrame& f : frames)
     if (f.reference_keyframe >= 0)
-      f.T_w_c = orthonormalised(result.map.keyframe(f.reference_keyframe).T_w_c * f.T_ref_c);
+      f.T_w_c = orthonormalised(map.keyframe(f.reference_keyframe).T_w_c * f.T_ref_c);
 }
 
-void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
-                    const std::filesystem::path& ply_path, const ProgressCallback& progress) {
-  if (!settings.map.enabled) return;
-  Stopwatch watch;
+FusionReport fuse_final_map(const Map& map, const std::vector<TrackedFrame>& tracked,
+                            KeyframeSamples samples, const TumSequence& sequence,
+                            const Settings& settings, const std::filesystem::path& ply_path,
+                            const ProgressCallback& progress) {
+  if (!settings.map.enabled) return {};
   std::vector<FusionFrame> keyframes;
-  for (size_t k = 0; k < result.map.keyframes().size(); ++k) {
-    const Keyframe& keyframe = result.map.keyframe(int(k));
+  for (size_t k = 0; k < map.keyframes().size(); ++k) {
+    const Keyframe& keyframe = map.keyframe(int(k));
     if (keyframe.culled) continue;  // left out, as from global BA and the loop pass
-    keyframes.push_back(
-        {keyframe.frame_index, keyframe.T_w_c,
-         k < result.keyframe_samples.size() ? result.keyframe_samples[k] : nullptr});
+    keyframes.push_back({keyframe.frame_index, keyframe.T_w_c, samples.of(k)});
   }
   std::vector<FusionFrame> frames;
   if (settings.map.frame_step <= 0) {
     frames = keyframes;
   } else {
-    for (size_t i = 0; i < result.frames.size(); i += size_t(settings.map.frame_step))
-      if (!result.frames[i].lost)
-        frames.push_back({result.frames[i].index, result.frames[i].T_w_c, nullptr});
+    for (size_t i = 0; i < tracked.size(); i += size_t(settings.map.frame_step))
+      if (!tracked[i].lost) frames.push_back({tracked[i].index, tracked[i].T_w_c, nullptr});
   }
-  if (frames.empty()) return;
-  result.fusion =
+  if (frames.empty()) return {};
+  const FusionReport report =
       fuse_map(sequence, frames, settings.map, ply_path, [&](size_t done, size_t total) {
         if (progress) progress("map", done, total);
       });
-  result.keyframe_samples.clear();  // freed with `keyframes` and `frames` at the return
   // The keyframes' centres beside the map, so that a viewer shows both.
   write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
-  result.seconds.fusion = watch.lap() / 1000.0;
+  return report;
 }
 
 }  // namespace slamkit

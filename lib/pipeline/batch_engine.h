@@ -3,11 +3,13 @@
 // next chunk while the current one is tracked), tracks them in order with the map's upkeep
 // and local BA at each keyframe, then runs the global stages over the whole map.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/settings/settings.h"
 #include "core/trajectory.h"
+#include "fusion/keyframe_samples.h"
 #include "fusion/map_fusion.h"
 #include "io/tum_sequence.h"
 #include "loop/loop_pass.h"
@@ -40,9 +42,8 @@ struct RunResult {
   std::vector<Eigen::Isometry3d> tracked_poses;  // as tracking produced them, per frame
   std::vector<MappingReport> keyframe_reports;   // one per keyframe
   Map map;
-  // Per keyframe, its samples for the map's fusion while within fusion.keyframe_cache_mb
-  // (null beyond it, for a culled keyframe, or without fusion).
-  std::vector<std::shared_ptr<const FusionSamples>> keyframe_samples;
+  // The keyframes' samples for the map's fusion (map.keyframe_cache_mb), until fused.
+  KeyframeSamples keyframe_samples;
   LoopPassReport loop_pass;  // ran = false unless the loop pass ran
   MapAdjustment global_ba;   // empty unless the global BA ran
   bool global_ba_run = false;
@@ -59,26 +60,32 @@ struct RunResult {
 // Called with (stage, done, total): stage is "track", "global BA" or "map".
 using ProgressCallback = std::function<void(const std::string&, size_t, size_t)>;
 
+// The stages of a run, in order (run_pipeline.h runs them). Each takes what it reads and
+// returns what it makes; the map is the one thing they share and change.
+
 // Prepare, track (with local BA at each keyframe, if enabled): the front end's run.
 // Throws InputError for unreadable frames (naming the file).
 RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
                          const ProgressCallback& progress = {});
 
-// Global BA over every keyframe and point (keyframe 0 fixed).
-// The loop pass (SPEC section 5) on the tracked map: `vocabulary` null trains one on the
-// keyframes (settings.loop). Keyframe poses and points move; the frames follow at reanchor.
-void close_loops_of(RunResult& result, const Camera& camera, const Settings& settings,
-                    const Vocabulary* vocabulary);
+// The loop pass on the tracked map is loop/loop_pass.h's close_loops.
 
-void adjust_globally(RunResult& result, const Camera& camera, const Settings& settings);
+// Global BA over every keyframe and point (keyframe 0 fixed); nullopt when it is off or the
+// map has fewer than 2 keyframes.
+std::optional<MapAdjustment> adjust_globally(Map& map, const Camera& camera,
+                                             const Settings& settings);
 
 // Every frame takes its reference keyframe's final pose composed with its pose relative to
 // that keyframe when it was tracked (keyframes take their own); a culled keyframe first takes
 // its parent's, as ORB-SLAM2 writes its trajectory.
-void reanchor_frames(RunResult& result);
+void reanchor_frames(Map& map, std::vector<TrackedFrame>& frames);
 
-// The fused map of the final poses, written to `ply_path` (settings.map).
-void fuse_final_map(RunResult& result, const TumSequence& sequence, const Settings& settings,
-                    const std::filesystem::path& ply_path, const ProgressCallback& progress = {});
+// The fused map of the final poses, written to `ply_path` (settings.map), with
+// keyframe_centres.ply beside it; frames == 0 when the map is not fused. Takes the samples,
+// which are freed once fused.
+FusionReport fuse_final_map(const Map& map, const std::vector<TrackedFrame>& frames,
+                            KeyframeSamples samples, const TumSequence& sequence,
+                            const Settings& settings, const std::filesystem::path& ply_path,
+                            const ProgressCallback& progress = {});
 
 }  // namespace slamkit

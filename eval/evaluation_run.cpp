@@ -1,4 +1,4 @@
-#include "bin/eval_run.h"
+#include "eval/evaluation_run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,6 @@
 #include <sstream>
 #include <vector>
 
-#include "bin/command.h"
 #include "core/error.h"
 #include "eval/association.h"
 #include "eval/ate.h"
@@ -23,17 +22,17 @@
 #include "eval/summary.h"
 #include "io/trajectory_io.h"
 
-namespace slamkit::cli {
+namespace slamkit::eval {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-void warn(const EvalArgs& a, const std::string& text) {
+void warn(const EvaluationRequest& a, const std::string& text) {
   if (!a.quiet) std::cerr << "slamkit: warning: " << text << "\n";
 }
 
-void print_reader_warnings(const EvalArgs& a, const TrajectoryFile& f) {
+void print_reader_warnings(const EvaluationRequest& a, const TrajectoryFile& f) {
   const size_t shown = std::min<size_t>(f.warnings.size(), 5);
   for (size_t k = 0; k < shown; ++k) warn(a, f.warnings[k]);
   if (f.warnings.size() > shown)
@@ -43,22 +42,22 @@ void print_reader_warnings(const EvalArgs& a, const TrajectoryFile& f) {
 
 // The rules in force: each one given explicitly, else the convention's.
 struct Rules {
-  eval::AssociationOptions association;
+  AssociationOptions association;
   TrajectoryReadOptions reading;
 };
 
-Rules resolve_rules(EvalArgs& a) {
-  const bool evo = eval::parse_association_method(a.convention) == eval::AssociationMethod::kEvo;
+Rules resolve_rules(EvaluationRequest& a) {
+  const bool evo = parse_association_method(a.convention) == AssociationMethod::kEvo;
   const auto pick = [&](const std::string& given, const char* tum, const char* evo_rule) {
     return given.empty() ? std::string(evo ? evo_rule : tum) : given;
   };
   Rules r;
-  r.association.method = eval::parse_association_method(pick(a.association, "tum", "evo"));
-  r.association.max_diff = a.max_diff.value_or(evo ? eval::kEvoMaxDiff : eval::kTumMaxDiff);
+  r.association.method = parse_association_method(pick(a.association, "tum", "evo"));
+  r.association.max_diff = a.max_diff.value_or(evo ? kEvoMaxDiff : kTumMaxDiff);
   r.association.offset = a.offset;
   r.reading.duplicates = parse_duplicate_stamps(pick(a.duplicates, "last", "first"));
   r.reading.time_unit = parse_time_unit(a.time_unit);
-  a.rpe.convention = eval::parse_rpe_convention(pick(a.rpe_convention, "tum", "evo"));
+  a.rpe.convention = parse_rpe_convention(pick(a.rpe_convention, "tum", "evo"));
   return r;
 }
 
@@ -79,14 +78,14 @@ void require_plausible_stamps(const Trajectory& t, const std::string& name) {
 struct Inputs {
   TrajectoryFile gt, est;
   std::vector<IndexPair> pairs;
-  eval::AssociationOptions association;
+  AssociationOptions association;
   TrajectoryReadOptions reading;
-  eval::Coverage coverage;
+  Coverage coverage;
 };
 
 // Reads both files, associates them and reports coverage; `need_pairs` makes fewer than 2
 // associated pairs an error, as is no overlap in time at all.
-Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
+Inputs load_inputs(EvaluationRequest& a, const Rules& rules, bool need_pairs) {
   Inputs in;
   in.association = rules.association;
   in.reading = rules.reading;
@@ -96,20 +95,20 @@ Inputs load_inputs(EvalArgs& a, const Rules& rules, bool need_pairs) {
   require_plausible_stamps(in.est.trajectory, a.est);
   print_reader_warnings(a, in.gt);
   print_reader_warnings(a, in.est);
-  eval::require_associable(in.gt.trajectory, in.est.trajectory, a.gt, a.est, in.association);
-  in.pairs = eval::associate(in.gt.trajectory, in.est.trajectory, in.association);
-  in.coverage = eval::compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
+  require_associable(in.gt.trajectory, in.est.trajectory, a.gt, a.est, in.association);
+  in.pairs = associate(in.gt.trajectory, in.est.trajectory, in.association);
+  in.coverage = compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
   // Without any overlap in time no metric can be computed: said as for ATE, not as RPE's
   // "no pose pair" after a coverage warning.
   if (need_pairs || (in.pairs.empty() && in.coverage.overlap_s == 0))
-    eval::require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
+    require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
                                in.association);
-  if (const auto text = eval::coverage_warning(in.coverage)) warn(a, *text);
+  if (const auto text = coverage_warning(in.coverage)) warn(a, *text);
   return in;
 }
 
 // Statistics that overflowed are refused rather than written (as null) or printed (as inf).
-void require_finite(const eval::ErrorStats& s, const std::string& what, const std::string& file) {
+void require_finite(const ErrorStats& s, const std::string& what, const std::string& file) {
   for (double v : {s.rmse, s.mean, s.median, s.std, s.min, s.max})
     if (!std::isfinite(v))
       throw_input_error(file, what +
@@ -118,11 +117,11 @@ void require_finite(const eval::ErrorStats& s, const std::string& what, const st
 }
 
 // A time delta shorter than the poses' spacing pairs each pose with itself or a neighbour.
-void warn_short_time_delta(const EvalArgs& a, const Trajectory& est) {
-  if (a.rpe.unit != eval::DeltaUnit::kSeconds || a.rpe.all_pairs || est.size() < 2) return;
+void warn_short_time_delta(const EvaluationRequest& a, const Trajectory& est) {
+  if (a.rpe.unit != DeltaUnit::kSeconds || a.rpe.all_pairs || est.size() < 2) return;
   std::vector<double> intervals(est.size() - 1);
   for (size_t k = 1; k < est.size(); ++k) intervals[k - 1] = est.stamp(k) - est.stamp(k - 1);
-  const double median = eval::compute_stats(intervals).median;
+  const double median = compute_stats(intervals).median;
   if (!(a.rpe.delta < median)) return;
   char text[256];
   std::snprintf(text, sizeof text,
@@ -133,7 +132,7 @@ void warn_short_time_delta(const EvalArgs& a, const Trajectory& est) {
 }
 
 // Fills in defaults that depend on the file names.
-void resolve_outputs(EvalArgs& a) {
+void resolve_outputs(EvaluationRequest& a) {
   if (a.out_dir.empty()) a.out_dir = a.plot_dir;  // plots are drawn from the data files
   const auto in_out = [&](std::string& path, const char* name) {
     if (path.empty() && !a.out_dir.empty()) path = (fs::path(a.out_dir) / name).string();
@@ -150,20 +149,20 @@ void resolve_outputs(EvalArgs& a) {
   if (a.system_name.empty()) a.system_name = fs::path(a.est).stem().string();
 }
 
-json common_json(const EvalArgs& a, const Inputs& in) {
+json common_json(const EvaluationRequest& a, const Inputs& in) {
   return {{"settings",
            {{"title", a.title},
             {"system_name", a.system_name},
             {"convention", a.convention},
-            {"association", eval::to_string(in.association.method)},
+            {"association", to_string(in.association.method)},
             {"max_diff", in.association.max_diff},
             {"offset", a.offset},
             {"time_unit", to_string(in.reading.time_unit)},
             {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
-           {{"groundtruth", eval::input_json(a.gt, in.gt)},
-            {"estimate", eval::input_json(a.est, in.est)}}},
-          {"coverage", eval::coverage_json(in.coverage)}};
+           {{"groundtruth", input_json(a.gt, in.gt)},
+            {"estimate", input_json(a.est, in.est)}}},
+          {"coverage", coverage_json(in.coverage)}};
 }
 
 }  // namespace
@@ -179,7 +178,7 @@ namespace {
 
 // Adds the figures of `kind` (ate or rpe), drawn from the files just written, when plots are
 // due: asked for with --plot, or into --out unless --no-plot.
-void add_figures(const EvalArgs& a, const std::string& kind, const std::string& csv_path,
+void add_figures(const EvaluationRequest& a, const std::string& kind, const std::string& csv_path,
                  json& figures) {
   const bool requested = !a.plot_dir.empty();
   if (!requested && (a.no_plot || a.out_dir.empty())) return;
@@ -194,12 +193,12 @@ void add_figures(const EvalArgs& a, const std::string& kind, const std::string& 
 
 // Draws every figure in one process; returns false (after saying why) when plots asked for
 // with --plot were not drawn.
-bool draw_plots(const EvalArgs& a, const json& figures) {
+bool draw_plots(const EvaluationRequest& a, const json& figures) {
   if (figures.empty()) return true;
   std::string what = figures[0]["figure"];  // "ate", "rpe" or "ate and rpe"
   if (figures.size() == 2) what += " and " + figures[1]["figure"].get<std::string>();
   const std::string dir = figures[0]["out"];
-  const eval::PlotOutcome outcome = eval::draw_figures(figures);
+  const PlotOutcome outcome = draw_figures(figures);
   if (outcome.drawn) {
     if (!a.quiet)
       std::printf("%s plots written to %s in %.2f s\n", what.c_str(), dir.c_str(), outcome.seconds);
@@ -214,14 +213,14 @@ bool draw_plots(const EvalArgs& a, const json& figures) {
 // `eval ate`, `eval rpe` and `eval all`: one reading of the inputs, then each metric.
 }  // namespace
 
-void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
+bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
   const Rules rules = resolve_rules(a);
-  a.rpe.unit = eval::parse_delta_unit(a.unit);
+  a.rpe.unit = parse_delta_unit(a.unit);
   a.rpe.offset = a.offset;
-  const eval::AteOptions ate_options{eval::parse_align_method(a.align), a.align_first};
-  const bool scale_rpe = do_rpe && ate_options.align == eval::AlignMethod::kSim3;
+  const AteOptions ate_options{parse_align_method(a.align), a.align_first};
+  const bool scale_rpe = do_rpe && ate_options.align == AlignMethod::kSim3;
   // The benchmark's RPE does its own matching; ATE, evo's RPE and a Sim(3) scale need pairs.
-  const bool need_pairs = do_ate || scale_rpe || a.rpe.convention == eval::RpeConvention::kEvo;
+  const bool need_pairs = do_ate || scale_rpe || a.rpe.convention == RpeConvention::kEvo;
   const Inputs in = load_inputs(a, rules, need_pairs);
   resolve_outputs(a);
   const Trajectory& gt = in.gt.trajectory;
@@ -230,41 +229,41 @@ void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
   // Each metric writes its files as soon as it is done, so that a million-pose run holds one
   // metric's per-pose data at a time.
   const json common = common_json(a, in);
-  eval::Alignment alignment;
+  Alignment alignment;
   json figures = json::array();
   if (do_ate) {
-    eval::AteResult ate = eval::compute_ate(gt, est, in.pairs, ate_options, a.gt, a.est);
+    AteResult ate = compute_ate(gt, est, in.pairs, ate_options, a.gt, a.est);
     require_finite(ate.trans, "ATE", a.est);
     alignment = ate.alignment;
     json update = common;
-    update["ate"] = eval::ate_json(ate);
+    update["ate"] = ate_json(ate);
     update["settings"]["align"] = a.align;
     update["settings"]["align_first"] = a.align_first;
-    if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
-    if (!a.ate_csv.empty()) eval::write_ate_csv(a.ate_csv, ate);
+    if (!a.json_path.empty()) merge_into_metrics_file(a.json_path, update);
+    if (!a.ate_csv.empty()) write_ate_csv(a.ate_csv, ate);
     if (!a.aligned_path.empty())
-      write_tum_trajectory(a.aligned_path, eval::apply_alignment(est, ate.alignment),
+      write_tum_trajectory(a.aligned_path, apply_alignment(est, ate.alignment),
                            "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
-    if (!a.quiet) std::fputs(eval::ate_summary(ate, in.coverage).c_str(), stdout);
+    if (!a.quiet) std::fputs(ate_summary(ate, in.coverage).c_str(), stdout);
     add_figures(a, "ate", a.ate_csv, figures);
   } else if (scale_rpe) {
-    alignment = eval::align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
+    alignment = align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
   }
   if (do_rpe) {
     a.rpe.scale = scale_rpe ? alignment.scale : 1.0;
     warn_short_time_delta(a, est);
-    const eval::RpeResult rpe = eval::compute_rpe(gt, est, in.pairs, a.rpe, a.est);
+    const RpeResult rpe = compute_rpe(gt, est, in.pairs, a.rpe, a.est);
     require_finite(rpe.trans, "RPE", a.est);
     require_finite(rpe.rot_deg, "RPE rotation", a.est);
     json update = common;
-    update["rpe"] = eval::rpe_json(rpe, a.rpe);
+    update["rpe"] = rpe_json(rpe, a.rpe);
     if (!do_ate) update["settings"]["align"] = a.align;
-    if (!a.json_path.empty()) eval::merge_into_metrics_file(a.json_path, update);
-    if (!a.rpe_csv.empty()) eval::write_rpe_csv(a.rpe_csv, rpe);
-    if (!a.quiet) std::fputs(eval::rpe_summary(rpe, a.rpe).c_str(), stdout);
+    if (!a.json_path.empty()) merge_into_metrics_file(a.json_path, update);
+    if (!a.rpe_csv.empty()) write_rpe_csv(a.rpe_csv, rpe);
+    if (!a.quiet) std::fputs(rpe_summary(rpe, a.rpe).c_str(), stdout);
     add_figures(a, "rpe", a.rpe_csv, figures);
   }
-  if (!draw_plots(a, figures)) throw ExitCode{1};
+  return draw_plots(a, figures);
 }
 
-}  // namespace slamkit::cli
+}  // namespace slamkit::eval

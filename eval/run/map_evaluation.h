@@ -6,7 +6,7 @@
 
 #include "datasets/synth/map_quality.h"
 
-namespace slamkit::cli {
+namespace slamkit::eval {
 
 // nullopt when `sequence` is not synthetic (no synthetic.yaml). A map made in the estimate's
 // own world frame (a run's map.ply: the first camera is the origin) is first brought into the
@@ -19,4 +19,4 @@ std::optional<synth::MapQuality> evaluate_map(
 
 void print_map_quality(const synth::MapQuality& quality);
 
-}  // namespace slamkit::cli
+}  // namespace slamkit::eval

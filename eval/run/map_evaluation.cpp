@@ -1,4 +1,4 @@
-#include "bin/map_evaluation.h"
+#include "eval/run/map_evaluation.h"
 
 #include <cstdio>
 
@@ -9,7 +9,7 @@
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"
 
-namespace slamkit::cli {
+namespace slamkit::eval {
 namespace {
 
 // The groundtruth pose of each frame, in frame order (frames without one are left out).
@@ -24,12 +24,12 @@ std::vector<Eigen::Isometry3d> groundtruth_poses(const TumSequence& sequence) {
 void align_into_groundtruth(std::vector<Eigen::Vector3f>& points, const Trajectory& gt,
                             const std::filesystem::path& trajectory) {
   const Trajectory est = read_tum_trajectory(trajectory).trajectory;
-  const eval::AssociationOptions options;
-  eval::require_associable(gt, est, "groundtruth", trajectory.string(), options);
-  const auto pairs = eval::associate(gt, est, options);
-  eval::require_enough_pairs(pairs.size(), gt, est, "groundtruth", trajectory.string(), options);
-  const eval::Alignment alignment =
-      eval::align(gt, est, pairs, eval::AlignMethod::kSe3, 0, "groundtruth", trajectory.string());
+  const AssociationOptions options;
+  require_associable(gt, est, "groundtruth", trajectory.string(), options);
+  const auto pairs = associate(gt, est, options);
+  require_enough_pairs(pairs.size(), gt, est, "groundtruth", trajectory.string(), options);
+  const Alignment alignment =
+      align(gt, est, pairs, AlignMethod::kSe3, 0, "groundtruth", trajectory.string());
   for (Eigen::Vector3f& p : points) p = alignment.apply(p.cast<double>()).cast<float>();
 }
 
@@ -64,4 +64,4 @@ void print_map_quality(const synth::MapQuality& q) {
       s.pixel_stride, s.min_depth, s.max_depth);
 }
 
-}  // namespace slamkit::cli
+}  // namespace slamkit::eval

@@ -1,16 +1,16 @@
 #pragma once
-// The evaluation run behind `slamkit eval ate|rpe|all`, also used by `slamkit track` when the
-// sequence has groundtruth: read both files, associate, compute, write, summarise, plot.
+// The evaluation run behind `slamkit eval ate|rpe|all`, also used by `slamkit run` and `track`
+// when the sequence has groundtruth: read both files, associate, compute, write, summarise, plot.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "eval/rpe.h"
 
-namespace slamkit::cli {
+namespace slamkit::eval {
 
 // Options of `eval ate`, `eval rpe` and `eval all` (each registers the ones it uses).
-struct EvalArgs {
+struct EvaluationRequest {
   std::string gt, est;
   // tum (the benchmark scripts) or evo: the defaults of the rules left unset below
   // (association, max_diff, duplicate stamps, RPE convention). See eval/README.md.
@@ -33,7 +33,7 @@ struct EvalArgs {
   std::string align = "se3";
   size_t align_first = 0;
   // RPE
-  eval::RpeOptions rpe;
+  RpeOptions rpe;
   std::string unit = "s";
   std::string rpe_convention;  // tum or evo; "" = the convention's
 };
@@ -41,7 +41,8 @@ struct EvalArgs {
 // "xy,xz" -> {"xy", "xz"}: the trajectory plot planes of --planes.
 std::vector<std::string> split_planes(const std::string& text);
 
-// Throws InputError for unreadable input and ExitCode{1} when requested plots fail.
-void run_eval(EvalArgs& args, bool do_ate, bool do_rpe);
+// Throws InputError for unreadable input. Returns false (after saying why on stderr) when plots
+// asked for with --plot were not drawn.
+bool run_evaluation(EvaluationRequest& request, bool do_ate, bool do_rpe);
 
-}  // namespace slamkit::cli
+}  // namespace slamkit::eval

@@ -1,0 +1,74 @@
+#include "eval/run/run_evaluation.h"
+
+#include <cstdio>
+
+#include "eval/evaluation_run.h"
+#include "eval/loop_accuracy.h"
+#include "eval/metrics_json.h"
+#include "eval/run/map_evaluation.h"
+#include "io/path_kind.h"
+
+namespace slamkit::eval {
+
+void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& out, bool plot) {
+  if (!seq.groundtruth()) {
+    std::printf("evaluation  skipped: the sequence has no groundtruth.txt\n");
+    return;
+  }
+  EvaluationRequest request;
+  request.gt = (seq.folder() / "groundtruth.txt").string();
+  request.est = (out / "trajectory.txt").string();
+  request.out_dir = out.string();
+  request.system_name = "slamkit";
+  request.title = seq.folder().filename().string();
+  request.no_plot = !plot;
+  if (seq.duration() < 2.0) {  // too short for the benchmark's 1 s drift: consecutive frames
+    request.unit = "f";
+    request.rpe.delta = 1;
+  }
+  // Plots were not asked for with --plot, so a plot that cannot be drawn is a note, not a failure.
+  run_evaluation(request, true, true);
+}
+
+void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out) {
+  if (!seq.groundtruth()) return;
+  const std::filesystem::path revisits = seq.folder() / "revisits.txt";
+  std::optional<std::vector<RevisitEpisode>> episodes;
+  if (path_kind(revisits) == PathKind::kFile) episodes = read_revisit_episodes(revisits);
+  const LoopAccuracy a =
+      judge_loops(read_accepted_loops(out / "loops.csv"), *seq.groundtruth(), episodes);
+  std::printf("loop check  %d accepted: %d true, %d false", a.accepted, a.true_loops,
+              a.false_loops());
+  if (a.unjudged > 0) std::printf(", %d without groundtruth", a.unjudged);
+  nlohmann::json update = {{"loops_accepted", a.accepted}, {"loops_false", a.false_loops()}};
+  if (const auto precision = a.precision()) {
+    std::printf(" (precision %.2f)", *precision);
+    update["loop_precision"] = *precision;
+  }
+  const LoopCriteria criteria;
+  if (a.accepted > 0)
+    std::printf(", %d within %.1f m and %.0f deg", a.same_place, criteria.max_distance_m,
+                criteria.max_angle_deg);
+  if (a.episodes && *a.episodes > 0)
+    std::printf("; %d of %d revisits found", a.episodes_found, *a.episodes);
+  if (const auto recall = a.recall()) {
+    std::printf(" (recall %.2f)", *recall);
+    update["loop_recall"] = *recall;
+  }
+  std::printf("\n");
+  merge_into_metrics_file(out / "metrics.json", update);
+}
+
+void evaluate_run_map(const TumSequence& seq, double max_depth, const std::filesystem::path& out) {
+  synth::MapQualitySettings quality_settings;
+  quality_settings.max_depth = max_depth;
+  const std::optional<synth::MapQuality> quality =
+      evaluate_map(out / "map.ply", seq.folder(), out / "trajectory.txt", quality_settings);
+  if (!quality) return;
+  print_map_quality(*quality);
+  nlohmann::json update;
+  synth::add_map_quality_json(update, *quality);
+  merge_into_metrics_file(out / "metrics.json", update);
+}
+
+}  // namespace slamkit::eval
