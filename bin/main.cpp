@@ -1,7 +1,9 @@
 // slamkit: one executable, subcommands registered by bin/cmd_*.cpp.
 #include <exception>
 #include <iostream>
+#include <string>
 
+#include "bin/build_info.h"
 #include "bin/command.h"
 #include "core/error.h"
 
@@ -24,7 +26,9 @@ const std::vector<CommandSetup>& registered_commands() { return registry(); }
 int main(int argc, char** argv) {
   CLI::App app{"slamkit: offline RGB-D SLAM reconstruction and evaluation"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "slamkit 0.1.0");
+  app.set_version_flag("--version", std::string("slamkit ") + slamkit::cli::kVersion + " (" +
+                                        slamkit::cli::kCommit + ", " +
+                                        slamkit::cli::kBuildType + " build)");
   for (const auto& setup : slamkit::cli::registered_commands()) setup(app);
   try {
     app.parse(argc, argv);

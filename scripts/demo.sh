@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job on the embedded default: sets up (scripts/setup.sh), then runs the whole pipeline
-# on a sequence (tracking with local BA, global BA, the fused map.ply) and evaluates it against
-# its groundtruth (ATE, RPE, plots; map accuracy on a synthetic sequence).
+# The main job on the embedded default: sets up (scripts/setup.sh: the packages and the slamkit
+# binary alone, not the tests), then runs the whole pipeline on a sequence (tracking with local
+# BA, loops, global BA, the fused map.ply) and evaluates it against its groundtruth (ATE, RPE,
+# plots; map accuracy on a synthetic sequence).
 #   scripts/demo.sh                 # renders the default synthetic sequence and processes it
 #   scripts/demo.sh SEQUENCE_DIR    # a TUM sequence folder instead (e.g. from download_tum.sh)
 # Output goes to runs/demo/ (override with SLAMKIT_RUN_DIR).

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages slamkit needs (only those missing) and builds it.
 # Idempotent and quiet when everything is already in place. Works as root or through sudo.
-#   scripts/setup.sh            # install what is missing, configure, build (Release)
+#   scripts/setup.sh            # install what is missing, configure, build the slamkit binary
+#   --all                       # build every target: the test suites and benchmarks too
+#   --werror                    # warnings are errors on the project's own code (CI)
 #   --test-tools                # also clang 14, libFuzzer and OpenMP for clang, for scripts/fuzz.sh and the
 #                               # sanitizer build (scripts/test.sh asks for them under CI)
 #   --with-slurm                # also Slurm, slurmdbd, munge and MariaDB's server binary, for
@@ -14,13 +16,18 @@ set -euo pipefail
 test_tools=false
 with_slurm=false
 build=true
+targets=(--target slamkit)
+werror=OFF
 for arg in "$@"; do
   case "$arg" in
+    --all) targets=() ;;
+    --werror) werror=ON ;;
     --test-tools) test_tools=true ;;
     --with-slurm) with_slurm=true ;;
     --packages-only) build=false ;;
     *)
-      echo "setup: unknown option '$arg' (--test-tools, --with-slurm, --packages-only)" >&2
+      echo "setup: unknown option '$arg' (--all, --werror, --test-tools, --with-slurm," \
+        "--packages-only)" >&2
       exit 2
       ;;
   esac
@@ -53,6 +60,32 @@ for package in "${packages[@]}"; do
   fi
 done
 
+mkdir -p "$build_dir"
+started=$SECONDS
+elapsed() { printf '%d min %02d s' $(((SECONDS - started) / 60)) $(((SECONDS - started) % 60)); }
+
+# Shows a long step's progress on one line: `count` lines of its log matching `pattern` out of
+# `total` (a terminal redraws the line; a log gets a line every 10 %).
+show_progress() {
+  local label="$1" pattern="$2" total="$3" log="$4" done=0 shown=-10 line percent
+  : >"$log"
+  while IFS= read -r line; do
+    printf '%s\n' "$line" >>"$log"
+    [[ "$line" =~ $pattern ]] || continue
+    if [[ -n "${BASH_REMATCH[1]:-}" ]]; then percent="${BASH_REMATCH[1]}"; else
+      done=$((done + 1)); percent=$((100 * done / total)); fi
+    ((percent > 100)) && percent=100
+    if [[ -t 1 ]]; then
+      printf '\rsetup: %s: %3d %% (%s)' "$label" "$percent" "$(elapsed)"
+    elif ((percent >= shown + 10)); then
+      shown=$percent
+      echo "setup: $label: $percent % ($(elapsed))"
+    fi
+  done
+  [[ -t 1 ]] && echo
+  return 0
+}
+
 if ((${#missing[@]} > 0)); then
   if [[ "$(id -u)" -eq 0 ]]; then
     sudo=()
@@ -62,17 +95,31 @@ if ((${#missing[@]} > 0)); then
     echo "setup: need root or sudo to install: ${missing[*]}" >&2
     exit 1
   fi
-  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  apt_log="$build_dir/apt.log"
+  echo "setup: installing ${#missing[@]} Debian packages and what they need: ${missing[*]}"
+  echo "setup: this takes a few minutes on a fresh machine; log: $apt_log"
   "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
+  # apt's own count of what it will set up, for the progress line.
+  total="$(DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -s --no-install-recommends \
+             "${missing[@]}" 2>/dev/null | grep -c '^Conf ' || true)"
+  if ! DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends \
+         "${missing[@]}" 2>&1 | show_progress "packages" '^Setting up ' "$((total > 0 ? total : 1))" \
+         "$apt_log"; then
+    tail -n 20 "$apt_log" >&2
+    echo "setup: installing packages failed; full log in $apt_log" >&2
+    exit 1
+  fi
+  echo "setup: packages installed ($(elapsed))"
 fi
 
 $build || exit 0
-mkdir -p "$build_dir"
 log="$build_dir/setup.log"
-if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release &&
-       cmake --build "$build_dir" -j "$(nproc)"; } >"$log" 2>&1; then
+what="slamkit"
+((${#targets[@]} == 0)) && what="slamkit, tests and benchmarks"
+echo "setup: building $what in $build_dir (Release); log: $log"
+if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSLAMKIT_WERROR="$werror" &&
+       cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}"; } 2>&1 |
+     show_progress "build" '^\[ *([0-9]+)%\]' 100 "$log"; then
   tail -n 40 "$log" >&2
   echo "setup: build failed; full log in $log" >&2
   exit 1
@@ -80,4 +127,4 @@ fi
 if grep -q "warning:" "$log"; then
   grep "warning:" "$log" | sort -u | head -n 20 >&2
 fi
-echo "setup: built $build_dir/bin/slamkit"
+echo "setup: built $build_dir/bin/slamkit ($(elapsed))"

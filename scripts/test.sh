@@ -1,20 +1,23 @@
 #!/usr/bin/env bash
-# Sets up (scripts/setup.sh) and runs the whole test suite with ctest.
+# Sets up (scripts/setup.sh --all: every test suite and benchmark) and runs the whole test suite
+# with ctest: both tiers, `unit` and `e2e` (docs/usage.md#tests). Extra arguments go to ctest,
+# e.g. `scripts/test.sh -L unit`.
 # Real-data tests read SLAMKIT_DATA (a folder with the TUM sequences and trajectories); without
 # it they are skipped with a message, except under CI=true where they fail. The same goes for the
 # loopback Slurm test.
-# Under CI=true setup also installs the test tools (clang and libFuzzer, Slurm), and after ctest
-# the fast suites run under ASan+UBSan (scripts/sanitize.sh) and a short fuzz pass goes over
-# every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per target, default 15).
+# Under CI=true setup also installs the test tools (clang and libFuzzer, Slurm) and builds with
+# warnings as errors, and after ctest every unit test runs under ASan+UBSan (scripts/sanitize.sh)
+# and a short fuzz pass goes over every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per
+# target, default 15).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 ci=false
 [[ "${CI:-}" == "true" ]] && ci=true
 if $ci; then
-  "$root/scripts/setup.sh" --test-tools --with-slurm
+  "$root/scripts/setup.sh" --all --werror --test-tools --with-slurm
 else
-  "$root/scripts/setup.sh"
+  "$root/scripts/setup.sh" --all
 fi
 if [[ -z "${SLAMKIT_DATA:-}" ]]; then
   echo "test: SLAMKIT_DATA is not set: tests on real TUM data will be skipped"

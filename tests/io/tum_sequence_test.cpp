@@ -169,14 +169,5 @@ TEST_F(BrokenSequence, CameraNotKnown) {
   }
 }
 
-TEST_F(BrokenSequence, CliPrintsOneLineAndExitsWithTwo) {
-  write("rgb.txt", "1.00 rgb/1.png\nabc rgb/2.png\n");
-  std::string output;
-  EXPECT_EQ(test::run_slamkit("info " + dir_.string(), &output), 2);
-  EXPECT_NE(output.find("slamkit: error: "), std::string::npos);
-  EXPECT_NE(output.find("rgb.txt:2:"), std::string::npos);
-  EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
-}
-
 }  // namespace
 }  // namespace slamkit

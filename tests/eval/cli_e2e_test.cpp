@@ -145,7 +145,7 @@ TEST(EvalCli, EvoConventionSetsEvosDefaultsAndTheOptionsStillOverrideThem) {
   EXPECT_EQ(m["rpe"]["pairs"], 99);  // evo keeps the last pair: (0,1) .. (98,99)
 }
 
-// The monocular case: an estimate at half scale. `eval rpe --align sim3` scales it
+// A monocular-like case: an estimate at half scale. `eval rpe --align sim3` scales it
 // first (scale 2 by construction), so consecutive-frame errors vanish; without, each step of
 // the estimate is half the groundtruth's.
 TEST(EvalCli, RpeWithSim3AlignmentScalesTheEstimateFirst) {

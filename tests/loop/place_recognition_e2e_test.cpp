@@ -28,7 +28,7 @@ Eigen::Isometry3d true_pose(const TumSequence& seq, size_t frame) {
   return seq.groundtruth()->pose(*i);
 }
 
-// Revisit as SPEC's loop check counts it: within 0.5 m and 30 degrees.
+// Revisit as the loop check counts it: within 0.5 m and 30 degrees.
 bool same_place(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   const Eigen::Isometry3d d = a.inverse() * b;
   return d.translation().norm() < 0.5 && Eigen::AngleAxisd(d.rotation()).angle() < M_PI / 6;

@@ -1,10 +1,13 @@
 // run.json: written first as running and last as complete, and an interrupted run leaves a
 // folder marked so, without half-written files, that readers refuse.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -44,6 +47,80 @@ TEST(RunStatus, RunJsonIsRunningWhileTheRunGoesAndCompleteAfterEveryOtherFile) {
   write_run_outputs(dir, "desk", seq.camera(), settings, result);
   EXPECT_THROW(eval::require_complete_run(dir), InputError);
   write_run_status(started, result.seconds);
+
+  const nlohmann::json status = read_json(dir / "run.json");
+  EXPECT_EQ(status["status"], "complete");
+  EXPECT_EQ(status["settings_hash"], eval::fnv1a64_file(dir / "settings.yaml"));
+  EXPECT_TRUE(status["started"].is_string() && status["ended"].is_string());
+  EXPECT_EQ(status["seconds"]["total"], result.seconds.total);
+  const auto last = fs::last_write_time(dir / "run.json");
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_LE(fs::last_write_time(entry.path()), last) << entry.path();
+  EXPECT_TRUE(temporaries(dir).empty());
+  EXPECT_NO_THROW(eval::require_complete_run(dir));
+}
+
+// A view of `sequence` in `view`: its lists and files copied, its images linked, except
+// `blocked_image` (a path relative to the folder), which is a named pipe: reading that frame
+// waits for a writer, so a run stops there for as long as the test wants.
+void link_sequence_with_blocking_frame(const fs::path& sequence, const fs::path& view,
+                                       const fs::path& blocked_image) {
+  fs::create_directories(view);
+  for (const auto& entry : fs::directory_iterator(sequence)) {
+    const fs::path target = view / entry.path().filename();
+    if (entry.is_regular_file()) {
+      fs::copy_file(entry.path(), target);
+    } else if (entry.is_directory()) {
+      fs::create_directories(target);
+      for (const auto& image : fs::directory_iterator(entry.path()))
+        if (entry.path().filename() / image.path().filename() != blocked_image)
+          fs::create_symlink(image.path(), target / image.path().filename());
+    }
+  }
+  ASSERT_EQ(mkfifo((view / blocked_image).c_str(), 0600), 0) << (view / blocked_image);
+}
+
+// Opens the pipe for writing once the run has opened it for reading (so the run is blocked
+// in that frame); fails if the run ends first.
+int open_when_the_run_reads(const fs::path& pipe, pid_t run) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::minutes(5)) {
+    const int fd = open(pipe.c_str(), O_WRONLY | O_NONBLOCK);  // ENXIO while no reader
+    if (fd >= 0) return fd;
+    if (errno != ENXIO) break;
+    int status = 0;
+    if (waitpid(run, &status, WNOHANG) == run) break;  // ended before the frame
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return -1;
+}
+
+TEST(RunStatus, SigtermMidRunMarksTheFolderInterruptedAndLeavesNoTemporary) {
+  const fs::path original = test::synthetic_sequence(synth::Preset::kDesk, 150);
+  const fs::path sequence = test::temp_dir("run_status_sequence") / "desk";
+  const TumSequence listed = TumSequence::open(original);
+  const fs::path blocked = listed.files(100).rgb.file;
+  ASSERT_NO_FATAL_FAILURE(link_sequence_with_blocking_frame(original, sequence, blocked));
+  const fs::path dir = test::temp_dir("run_status") / "run";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(SLAMKIT_BINARY, SLAMKIT_BINARY, "run", sequence.c_str(), "--out", dir.c_str(),
+          "--threads", "1", nullptr);
+    _exit(127);
+  }
+  // Mid-run: the run waits in frame 100 of 150, so run.json says running.
+  const int pipe = open_when_the_run_reads(sequence / blocked, child);
+  ASSERT_GE(pipe, 0) << "the run ended before reading frame 100";
+  ASSERT_EQ(read_json(dir / "run.json")["status"], "running");
+  kill(child, SIGTERM);
+  int wait_status = 0;
+  ASSERT_EQ(waitpid(child, &wait_status, 0), child);
+  close(pipe);
+  ASSERT_TRUE(WIFEXITED(wait_status));
+  EXPECT_EQ(WEXITSTATUS(wait_status), 128 + SIGTERM);
 
   const nlohmann::json status = read_json(dir / "run.json");
   EXPECT_EQ(status["status"], "complete");
@@ -103,7 +180,9 @@ TEST(RunStatus, SigtermMidRunMarksTheFolderInterruptedAndLeavesNoTemporary) {
                              "error, was interrupted or is still running; run it again\n");
   EXPECT_THROW(regress::read_run_metrics(dir), InputError);
 
-  // Run again into the same folder: complete, and both readers take it.
+  // Run again into the same folder, the frame readable: complete, and both readers take it.
+  fs::remove(sequence / blocked);
+  fs::create_symlink(original / blocked, sequence / blocked);
   std::string output;
   ASSERT_EQ(test::run_slamkit("run " + sequence.string() + " --out " + dir.string(), &output), 0)
       << output;
