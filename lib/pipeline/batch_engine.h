@@ -1,7 +1,8 @@
 #pragma once
-// The batch engine (DESIGN): reads a whole sequence, prepares frames in parallel chunks (the
-// next chunk while the current one is tracked), tracks them in order with the map's upkeep
-// and local BA at each keyframe, then runs the global stages over the whole map.
+// The batch engine (docs/method.md#architecture): reads a whole sequence, prepares frames in
+// parallel chunks (the next chunk while the current one is tracked), tracks them in order with
+// the map's upkeep and local BA at each keyframe, then runs the global stages over the whole
+// map.
 #include <functional>
 #include <string>
 #include <vector>
@@ -65,8 +66,8 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
                          const ProgressCallback& progress = {});
 
 // Global BA over every keyframe and point (keyframe 0 fixed).
-// The loop pass (SPEC section 5) on the tracked map: `vocabulary` null trains one on the
-// keyframes (settings.loop). Keyframe poses and points move; the frames follow at reanchor.
+// The loop pass (docs/method.md#loop-closing) on the tracked map: `vocabulary` null trains one
+// on the keyframes (settings.loop). Keyframe poses and points move; the frames follow at reanchor.
 void close_loops_of(RunResult& result, const Camera& camera, const Settings& settings,
                     const Vocabulary* vocabulary);
 
