@@ -1,5 +1,6 @@
-// slamkit run SEQ --out DIR: the whole batch (DESIGN): prepare, track with local BA, global BA,
-// re-anchor every frame, fuse the map (map.ply), write, evaluate with groundtruth.
+// slamkit run SEQ --out DIR: the whole batch (docs/method.md#architecture): prepare, track
+// with local BA, global BA, re-anchor every frame, fuse the map (map.ply), write, evaluate with
+// groundtruth.
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -119,7 +120,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
       "point-cloud map (map.ply), evaluation");
   cmd->add_option("sequence", args->folder, "Sequence folder (TUM layout)")->required();
   cmd->add_option("--out", args->out, "Run folder to write")->required();
-  cmd->add_option("--settings", args->settings_file, "Settings YAML (defaults: SPEC's)");
+  cmd->add_option("--settings", args->settings_file, "Settings YAML (over the built-in defaults)");
   cmd->add_option("--threads", args->threads, "Threads for the parallel stages (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");

@@ -1,5 +1,6 @@
-// slamkit track SEQ --out DIR: the front end over a whole sequence (SPEC sections 1-3), without
-// the back end's bundle adjustments and map (`slamkit run` runs everything).
+// slamkit track SEQ --out DIR: the front end over a whole sequence (features, matching and
+// pose, keyframes: docs/method.md), without the back end's bundle adjustments and map
+// (`slamkit run` runs everything).
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -59,7 +60,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
       "(and ATE/RPE)");
   cmd->add_option("sequence", args->folder, "Sequence folder (TUM layout)")->required();
   cmd->add_option("--out", args->out, "Run folder to write")->required();
-  cmd->add_option("--settings", args->settings_file, "Settings YAML (defaults: SPEC's)");
+  cmd->add_option("--settings", args->settings_file, "Settings YAML (over the built-in defaults)");
   cmd->add_option("--threads", args->threads, "Threads for the parallel stage (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");

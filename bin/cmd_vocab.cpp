@@ -1,5 +1,6 @@
 // slamkit vocab train SEQ... --out FILE: a bag-of-words vocabulary from the ORB features of
-// sequences' frames (SPEC section 5); slamkit vocab info FILE: what a vocabulary file holds.
+// sequences' frames (docs/method.md#loop-closing); slamkit vocab info FILE: what a vocabulary
+// file holds.
 #include <omp.h>
 
 #include <cstdio>
@@ -88,7 +89,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   train_cmd->add_option("sequences", args->folders, "Sequence folders (TUM layout)")->required();
   train_cmd->add_option("--out", args->out, "Vocabulary file to write (binary)")->required();
   train_cmd->add_option("--settings", args->settings_file,
-                        "Settings YAML (orb and vocabulary sections; defaults: SPEC's)");
+                        "Settings YAML (orb and vocabulary sections, over the built-in defaults)");
   // The ranges are those of the vocabulary settings (io/settings_fields.h).
   train_cmd->add_option("-k,--branching", args->branching, "Children per node (default 10)")
       ->check(CLI::Range(2, 255));

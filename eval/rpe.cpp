@@ -149,7 +149,7 @@ IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P, const RpeO
     for (size_t k = 1; k < ids.size(); ++k) pairs.push_back({ids[k - 1], ids[k]});
     return pairs;
   }
-  if (o.unit == DeltaUnit::kDegrees) {  // filter_pairs_by_angle (evo >= Aug 2021, PR #426)
+  if (o.unit == DeltaUnit::kDegrees) {  // filter_pairs_by_angle (evo pull request 426, Aug 2021)
     if (o.delta > 180.0)
       throw std::invalid_argument("--delta in degrees must be within [0, 180] (evo's rule)");
     const double delta = o.delta * (M_PI / 180.0), tol = o.delta * o.rel_delta_tol * (M_PI / 180.0);

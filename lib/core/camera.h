@@ -37,7 +37,7 @@ struct Camera {
     return uv.x() >= 0 && uv.y() >= 0 && uv.x() <= width - 1 && uv.y() <= height - 1;
   }
 
-  // The TUM RGB-D benchmark's cameras (SPEC section 0).
+  // The TUM RGB-D benchmark's cameras (docs/method.md#input).
   static Camera freiburg1();
   static Camera freiburg2();
   static Camera freiburg3();

@@ -1,5 +1,5 @@
 #pragma once
-// Shrinking a grey image by area averaging: the pyramid's INTER_AREA (SPEC section 1).
+// Shrinking a grey image by area averaging: the pyramid's INTER_AREA (docs/method.md#features).
 #include <opencv2/core.hpp>
 
 namespace slamkit {

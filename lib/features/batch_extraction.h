@@ -1,5 +1,6 @@
 #pragma once
-// ORB features of many frames at once (SPEC section 1: the batch engine's parallel extraction).
+// ORB features of many frames at once: the batch engine's parallel extraction
+// (docs/method.md#features).
 #include <opencv2/core.hpp>
 #include <vector>
 

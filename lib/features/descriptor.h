@@ -1,5 +1,5 @@
 #pragma once
-// Steered BRIEF descriptors (SPEC section 1).
+// Steered BRIEF descriptors (docs/method.md#features).
 #include <opencv2/core.hpp>
 #include <vector>
 

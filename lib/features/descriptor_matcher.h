@@ -1,5 +1,5 @@
 #pragma once
-// Matching two sets of ORB descriptors by Hamming distance (SPEC section 2).
+// Matching two sets of ORB descriptors by Hamming distance (docs/method.md#matching-and-pose).
 #include <opencv2/core.hpp>
 #include <vector>
 

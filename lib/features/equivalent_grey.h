@@ -1,6 +1,6 @@
 #pragma once
-// The paper's equivalent grey I_e = (R + G + B) / 3 (SPEC section 3). Features and the window
-// code both read it, so one pyramid per frame serves both.
+// The paper's equivalent grey I_e = (R + G + B) / 3 (docs/method.md#keyframes). Features and
+// the window code both read it, so one pyramid per frame serves both.
 #include <opencv2/core.hpp>
 
 namespace slamkit {

@@ -41,9 +41,9 @@ std::vector<float> shi_tomasi_response(const cv::Mat& grey, const std::vector<cv
   if (dx.datastart != dx_buffer.datastart || dy.datastart != dy_buffer.datastart) {
     throw std::logic_error("shi_tomasi_response: cv::spatialGradient reallocated its output");
   }
-  // The sparse window sums are ours (SPEC: corner response vectorised), on OpenCV's portable
-  // SIMD: 8 derivatives per load, lanes past the window masked off. Integer sums, so the result
-  // is exact whatever the instruction set.
+  // The sparse window sums are ours (the paper vectorises the corner response), on OpenCV's
+  // portable SIMD: 8 derivatives per load, lanes past the window masked off. Integer sums, so
+  // the result is exact whatever the instruction set.
   const int chunks = (block_size + kLanes - 1) / kLanes;
   std::vector<cv::v_int16x8> masks(chunks);
   for (int c = 0; c < chunks; ++c) {

@@ -1,5 +1,5 @@
 #pragma once
-// Ranking and choosing FAST corners by their Shi-Tomasi response (SPEC section 1).
+// Ranking and choosing FAST corners by their Shi-Tomasi response (docs/method.md#features).
 #include <opencv2/core.hpp>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// ORB extraction of one frame: the recipe of SPEC section 1.
+// ORB extraction of one frame: the recipe of docs/method.md#features.
 #include <opencv2/core.hpp>
 
 #include "core/camera.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Keypoint orientation by the intensity centroid (SPEC section 1).
+// Keypoint orientation by the intensity centroid (docs/method.md#features).
 #include <opencv2/core.hpp>
 #include <vector>
 

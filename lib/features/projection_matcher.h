@@ -1,6 +1,6 @@
 #pragma once
 // Guided matching: map points projected with a predicted pose, matched to keypoints nearby
-// (SPEC section 2, ORB-SLAM2's SearchByProjection).
+// (docs/method.md#matching-and-pose, ORB-SLAM2's SearchByProjection).
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 #include <vector>

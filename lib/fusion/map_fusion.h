@@ -1,7 +1,8 @@
 #pragma once
-// The point-cloud map (SPEC section 6): frames back-projected with their final poses into one
-// coloured cloud, voxel-grid down-sampled, statistical outliers removed, written as PLY. The
-// only module that includes PCL (in its .cpp files: callers never see PCL types).
+// The point-cloud map (docs/method.md#map-fusion): frames back-projected with their final
+// poses into one coloured cloud, voxel-grid down-sampled, statistical outliers removed,
+// written as PLY. The only module that includes PCL (in its .cpp files: callers never see PCL
+// types).
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <functional>

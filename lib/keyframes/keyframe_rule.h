@@ -1,6 +1,6 @@
 #pragma once
-// The keyframe rule (SPEC section 3): the current frame is compared with the latest keyframe
-// and its neighbour frames; if the least similar of them has zeta < 0.7 the frame is a
+// The keyframe rule (docs/method.md#keyframes): the current frame is compared with the latest
+// keyframe and its neighbour frames; if the least similar of them has zeta < 0.7 the frame is a
 // keyframe. A guard (ours) also makes one when tracking thins out.
 #include <vector>
 

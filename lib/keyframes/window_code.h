@@ -1,7 +1,7 @@
 #pragma once
-// Random window encoding (SPEC section 3): every pyramid level is cut into 2x2-pixel windows;
-// one pixel per window, drawn once per run, is compared with a threshold tau and gives one
-// bit. Similar codes mean similar views; the keyframe rule compares them.
+// Random window encoding (docs/method.md#keyframes): every pyramid level is cut into
+// 2x2-pixel windows; one pixel per window, drawn once per run, is compared with a threshold tau
+// and gives one bit. Similar codes mean similar views; the keyframe rule compares them.
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>

@@ -1,5 +1,6 @@
 #pragma once
-// Images as bag-of-words vectors (SPEC section 5), and the direct index of one image.
+// Images as bag-of-words vectors (docs/method.md#loop-closing), and the direct index of one
+// image.
 #include <cstdint>
 #include <vector>
 
@@ -20,8 +21,8 @@ using BowVector = std::vector<BowEntry>;
 // image carries no information), sorts by word and scales to L1 norm 1.
 BowVector normalised_bow(std::vector<BowEntry> entries);
 
-// The L1 score s(a, b) = 1 - 0.5 |a/|a| - b/|b||_1 (SPEC section 5): 1 for the same vector,
-// 0 when no word is shared. 0 when either vector is empty.
+// The L1 score s(a, b) = 1 - 0.5 |a/|a| - b/|b||_1 (docs/method.md#loop-closing): 1 for the
+// same vector, 0 when no word is shared. 0 when either vector is empty.
 double l1_score(const BowVector& a, const BowVector& b);
 
 // The direct index of one image: the features (row indices into its descriptor matrix) under

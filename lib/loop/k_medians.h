@@ -1,6 +1,6 @@
 #pragma once
 // One split of the vocabulary tree: k-medians clustering of binary descriptors under the
-// Hamming distance, seeded by k-means++ (SPEC section 5).
+// Hamming distance, seeded by k-means++ (docs/method.md#loop-closing).
 #include <cstdint>
 #include <vector>
 

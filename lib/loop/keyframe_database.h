@@ -1,6 +1,6 @@
 #pragma once
-// The inverted index of keyframes by word (SPEC section 5): which keyframes look like a query
-// image, for loop detection and relocalisation.
+// The inverted index of keyframes by word (docs/method.md#loop-closing): which keyframes look
+// like a query image, for loop detection and relocalisation.
 //
 // Detection on top of it (ORB-SLAM2's DetectLoopCandidates) queries with the current keyframe,
 // excluding its covisible neighbours and recent keyframes, sets min_score to the lowest score

@@ -1,5 +1,5 @@
 #pragma once
-// Loop fusion (ORB-SLAM2's SearchAndFuse in CorrectLoop, ORBSLAM2_BACKEND.md section 6): once
+// Loop fusion (ORB-SLAM2's SearchAndFuse in CorrectLoop, docs/method.md#loop-closing): once
 // the map is corrected, the two ends of a loop still hold two copies of the same scene, one
 // made at the start and one at the end. The points around the loop keyframe are projected into
 // the keyframe that found the loop and its neighbours and fused with the copies there, so that

@@ -1,9 +1,9 @@
 #pragma once
-// ORB-SLAM2's last loop check (ComputeSim3's SearchByProjection, ORBSLAM2_BACKEND.md section
-// 6): with the measured loop pose, the map points around the candidate (its own and those of
-// all its covisible neighbours) are projected into the keyframe and matched to keypoints
-// nearby. A true loop sees its whole neighbourhood line up; a pose fitted to a few pairs that
-// fit a wrong pose as well (a far wall, one surface) does not.
+// ORB-SLAM2's last loop check (ComputeSim3's SearchByProjection, docs/method.md#loop-closing):
+// with the measured loop pose, the map points around the candidate (its own and those of all
+// its covisible neighbours) are projected into the keyframe and matched to keypoints nearby. A
+// true loop sees its whole neighbourhood line up; a pose fitted to a few pairs that fit a wrong
+// pose as well (a far wall, one surface) does not.
 #include <Eigen/Geometry>
 #include <vector>
 

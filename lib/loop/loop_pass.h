@@ -1,8 +1,8 @@
 #pragma once
-// The loop pass of the batch (DESIGN card: tracking, then the loop pass, then global BA; SPEC
-// section 5): every keyframe, in order, queries the keyframes before it by bag of words; the
-// candidates that pass the paper's checks become loop edges, and the essential graph spreads
-// their correction over the map before the global BA refines it.
+// The loop pass of the batch (after tracking, before global BA: docs/method.md#architecture;
+// docs/method.md#loop-closing): every keyframe, in order, queries the keyframes before it by
+// bag of words; the candidates that pass the paper's checks become loop edges, and the
+// essential graph spreads their correction over the map before the global BA refines it.
 #include <vector>
 
 #include "core/camera.h"

@@ -1,10 +1,10 @@
 #pragma once
-// The geometric checks a loop candidate must pass (SPEC section 5, the paper's numbers): ORB
-// matches of the keyframe with the candidate's map points (fewer than 50: no loop), their
-// relative pose by RANSAC-SVD on the 3D-3D pairs (the tracker's solver), then that pose against
-// the current estimate: a loop only if they differ by less than kappa = 1 m, which rejects
-// places that look alike but are elsewhere. Every number is reported so that loops.csv can
-// show why a candidate was kept or refused.
+// The geometric checks a loop candidate must pass (the paper's numbers,
+// docs/method.md#loop-closing): ORB matches of the keyframe with the candidate's map points
+// (fewer than 50: no loop), their relative pose by RANSAC-SVD on the 3D-3D pairs (the
+// tracker's solver), then that pose against the current estimate: a loop only if they differ
+// by less than kappa = 1 m, which rejects places that look alike but are elsewhere. Every
+// number is reported so that loops.csv can show why a candidate was kept or refused.
 #include <Eigen/Geometry>
 #include <string>
 

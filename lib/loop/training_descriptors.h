@@ -1,6 +1,7 @@
 #pragma once
 // The training images of a vocabulary: ORB descriptors of a sequence's frames, extracted as
-// tracking extracts them (SPEC section 1), so the words fit the features they will index.
+// tracking extracts them (docs/method.md#features), so the words fit the features they will
+// index.
 #include <opencv2/core.hpp>
 #include <vector>
 

@@ -1,6 +1,7 @@
 #pragma once
-// A bag-of-words vocabulary of binary ORB descriptors (SPEC section 5, the textbook's): a
-// k-ary tree of depth L whose leaves are the words, each word weighted by its IDF.
+// A bag-of-words vocabulary of binary ORB descriptors (the textbook's,
+// docs/method.md#loop-closing): a k-ary tree of depth L whose leaves are the words, each word
+// weighted by its IDF.
 //
 // Written here from the definitions: no well-kept bag-of-words library is packaged for
 // Debian 12 (DBoW2, DBoW3 and fbow are not).

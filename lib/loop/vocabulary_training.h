@@ -1,6 +1,6 @@
 #pragma once
-// Training a vocabulary (SPEC section 5): hierarchical k-medians on the training images'
-// descriptors, then each word's IDF.
+// Training a vocabulary (docs/method.md#loop-closing): hierarchical k-medians on the training
+// images' descriptors, then each word's IDF.
 #include <opencv2/core.hpp>
 #include <vector>
 

@@ -1,6 +1,7 @@
 #pragma once
-// A keyframe (SPEC section 3): its timestamp, its pose and inverse, its ORB features, the map
-// points its keypoints observe, and its place in the covisibility graph and spanning tree.
+// A keyframe (docs/method.md#keyframes): its timestamp, its pose and inverse, its ORB
+// features, the map points its keypoints observe, and its place in the covisibility graph and
+// spanning tree.
 #include <Eigen/Geometry>
 #include <map>
 #include <opencv2/core.hpp>

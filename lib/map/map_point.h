@@ -1,6 +1,7 @@
 #pragma once
 // A landmark: a 3D point, the keyframe keypoints that observe it, and what projection search
-// needs to find it again (ORBSLAM2_BACKEND.md section 1).
+// needs to find it again (as ORB-SLAM2's map points keep it;
+// docs/method.md#local-mapping-and-bundle-adjustment).
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 #include <vector>

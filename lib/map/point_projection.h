@@ -1,8 +1,9 @@
 #pragma once
-// Where a map point falls in a view, behind ORB-SLAM2's projection gates (ORBSLAM2_BACKEND.md
-// section 1): in front of the camera and inside the image, its distance within the point's
-// scale-valid range (0.8 x min to 1.2 x max), seen at most about 60 degrees off its mean
-// viewing direction. Shared by duplicate fusion and the loop's neighbourhood search.
+// Where a map point falls in a view, behind ORB-SLAM2's projection gates
+// (docs/method.md#local-mapping-and-bundle-adjustment): in front of the camera and inside the
+// image, its distance within the point's scale-valid range (0.8 x min to 1.2 x max), seen at
+// most about 60 degrees off its mean viewing direction. Shared by duplicate fusion and the
+// loop's neighbourhood search.
 #include <Eigen/Geometry>
 #include <optional>
 

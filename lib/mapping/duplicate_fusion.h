@@ -1,7 +1,7 @@
 #pragma once
-// Duplicate fusion (ORB-SLAM2's Fuse, ORBSLAM2_BACKEND.md section 1): map points projected
-// into a keyframe are merged with the point its matching keypoint already observes (the
-// better-observed one survives), or give that keypoint its observation.
+// Duplicate fusion (ORB-SLAM2's Fuse, docs/method.md#local-mapping-and-bundle-adjustment): map
+// points projected into a keyframe are merged with the point its matching keypoint already
+// observes (the better-observed one survives), or give that keypoint its observation.
 #include <vector>
 
 #include "core/camera.h"

@@ -99,7 +99,7 @@ bool LocalMapper::redundant(int keyframe) const {
 }
 
 int LocalMapper::create_points(int keyframe) {
-  // SPEC: landmarks come from depth. Every keypoint with valid depth and no point yet.
+  // Landmarks come from depth (the paper's rule): every keypoint with valid depth and no point yet.
   int created = 0;
   const size_t n = map_.keyframe(keyframe).keypoints.size();
   for (size_t i = 0; i < n; ++i) {

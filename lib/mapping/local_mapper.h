@@ -1,9 +1,9 @@
 #pragma once
 // What happens to the map at each new keyframe (stella_vslam's mapping_module, ORB-SLAM2's
-// LocalMapping, ORBSLAM2_BACKEND.md section 1): the tracked points gain the keyframe's
-// observations, keypoints with depth and no point make new points, the covisibility graph is
-// updated, recent points on probation are culled, duplicates in the neighbourhood are fused,
-// and local BA adjusts the window (SPEC section 4).
+// LocalMapping; docs/method.md#local-mapping-and-bundle-adjustment): the tracked points gain
+// the keyframe's observations, keypoints with depth and no point make new points, the
+// covisibility graph is updated, recent points on probation are culled, duplicates in the
+// neighbourhood are fused, and local BA adjusts the window.
 #include <future>
 #include <memory>
 #include <vector>

@@ -1,8 +1,8 @@
 #pragma once
-// Bundle adjustment over keyframe poses and map points (SPEC section 4), as plain data so
-// that local BA, global BA and the tests build the same problem. The map (lib/map) is turned
-// into a BaProblem by the mapping stage and the result written back; this module knows
-// nothing of the map.
+// Bundle adjustment over keyframe poses and map points
+// (docs/method.md#local-mapping-and-bundle-adjustment), as plain data so that local BA, global
+// BA and the tests build the same problem. The map (lib/map) is turned into a BaProblem by the
+// mapping stage and the result written back; this module knows nothing of the map.
 #include <Eigen/Geometry>
 #include <vector>
 

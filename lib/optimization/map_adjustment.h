@@ -22,9 +22,9 @@ struct MapAdjustment {
 // visible/found counts in between, but no keyframe, point or observation.
 class MapBaJob {
  public:
-  // Local BA around `keyframe` (ORBSLAM2_BACKEND.md section 3): it and its covisible
-  // neighbours move (keyframe 0 never does), every other keyframe observing their points is
-  // fixed.
+  // Local BA around `keyframe` (ORB-SLAM2's LocalBundleAdjustment,
+  // docs/method.md#local-mapping-and-bundle-adjustment): it and its covisible neighbours move
+  // (keyframe 0 never does), every other keyframe observing their points is fixed.
   static MapBaJob local_window(const Map& map, int keyframe, const Camera& camera,
                                const OptimizationSettings& settings);
   // Global BA: every keyframe and point, keyframe 0 fixed. Keyframes with fewer than

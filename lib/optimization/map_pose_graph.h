@@ -1,8 +1,8 @@
 #pragma once
-// Loop correction on the map (SPEC section 5; ORB-SLAM2's OptimizeEssentialGraph, in SE(3)):
-// the essential graph (spanning tree, strong covisibility, loop edges) built from the map's
-// current poses, optimised as a pose graph, and the result applied: every keyframe moves,
-// and every point moves with its reference keyframe. The global BA runs after it.
+// Loop correction on the map (docs/method.md#loop-closing; ORB-SLAM2's OptimizeEssentialGraph,
+// in SE(3)): the essential graph (spanning tree, strong covisibility, loop edges) built from
+// the map's current poses, optimised as a pose graph, and the result applied: every keyframe
+// moves, and every point moves with its reference keyframe. The global BA runs after it.
 #include <Eigen/Geometry>
 #include <vector>
 

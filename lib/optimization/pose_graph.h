@@ -1,9 +1,9 @@
 #pragma once
-// Pose-graph optimisation over keyframe poses (SPEC section 5, loop correction; ORB-SLAM2's
-// essential graph, in SE(3) since RGB-D fixes the scale): each edge measures the pose of one
-// keyframe in another's frame; the poses move to agree with all edges at once, which spreads
-// a loop's correction along the loop. Ceres with a quaternion manifold, as its pose_graph_3d
-// example builds it. Plain data: the loop pass turns the map into this and back.
+// Pose-graph optimisation over keyframe poses (loop correction, docs/method.md#loop-closing;
+// ORB-SLAM2's essential graph, in SE(3) since RGB-D fixes the scale): each edge measures the
+// pose of one keyframe in another's frame; the poses move to agree with all edges at once,
+// which spreads a loop's correction along the loop. Ceres with a quaternion manifold, as its
+// pose_graph_3d example builds it. Plain data: the loop pass turns the map into this and back.
 #include <Eigen/Geometry>
 #include <vector>
 

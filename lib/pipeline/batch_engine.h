@@ -1,7 +1,8 @@
 #pragma once
-// The batch engine (DESIGN): reads a whole sequence, prepares frames in parallel chunks (the
-// next chunk while the current one is tracked), tracks them in order with the map's upkeep
-// and local BA at each keyframe, then runs the global stages over the whole map.
+// The batch engine (docs/method.md#architecture): reads a whole sequence, prepares frames in
+// parallel chunks (the next chunk while the current one is tracked), tracks them in order with
+// the map's upkeep and local BA at each keyframe, then runs the global stages over the whole
+// map.
 #include <functional>
 #include <optional>
 #include <string>
@@ -68,7 +69,8 @@ using ProgressCallback = std::function<void(const std::string&, size_t, size_t)>
 RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
                          const ProgressCallback& progress = {});
 
-// The loop pass on the tracked map is loop/loop_pass.h's close_loops.
+// The loop pass (docs/method.md#loop-closing) on the tracked map is loop/loop_pass.h's
+// close_loops: keyframe poses and points move; the frames follow at reanchor_frames.
 
 // Global BA over every keyframe and point (keyframe 0 fixed); nullopt when it is off or the
 // map has fewer than 2 keyframes.

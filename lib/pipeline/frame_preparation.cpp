@@ -25,8 +25,8 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
       out.features = extract_orb(frame.rgb, sequence.camera(), settings.orb);
       out.keypoint_depths = keypoint_depths(out.features, frame.depth);
       out.features_ms = watch.lap();
-      // The window code reads the feature pyramid (SPEC: "each pyramid level"), unless the
-      // keyframe settings ask for other levels than ORB's.
+      // The window code reads the feature pyramid (it codes each pyramid level:
+      // docs/method.md#keyframes), unless the keyframe settings ask for other levels than ORB's.
       const ImagePyramid& grey = out.features.pyramid;
       out.window_code =
           fits(grey, pattern)

@@ -1,8 +1,8 @@
 #pragma once
-// A run's folder (DESIGN): trajectory.txt and keyframes.txt (TUM format), tracking.csv (one
-// row a frame), mapping.csv (one row a keyframe), settings.yaml and camera.yaml (to reproduce
-// it), timing.json; with the back end, trajectory_tracked.txt (the poses before its
-// corrections reached the frames).
+// A run's folder (docs/method.md#architecture): trajectory.txt and keyframes.txt (TUM format),
+// tracking.csv (one row a frame), mapping.csv (one row a keyframe), settings.yaml and
+// camera.yaml (to reproduce it), timing.json; with the back end, trajectory_tracked.txt (the
+// poses before its corrections reached the frames).
 #include <filesystem>
 #include <functional>
 #include <string>

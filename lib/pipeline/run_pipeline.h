@@ -1,5 +1,5 @@
 #pragma once
-// `slamkit run`: the whole batch in the design card's order, one line a stage.
+// `slamkit run`: the whole batch in order (docs/method.md#architecture), one line a stage.
 #include <filesystem>
 #include <string>
 

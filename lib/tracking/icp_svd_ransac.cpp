@@ -76,7 +76,7 @@ std::optional<Eigen::Isometry3d> fit_rigid(const std::vector<Eigen::Vector3d>& q
                                                      Eigen::EigenvaluesOnly)
           .eigenvalues();  // ascending
   if (!(spread(1) > 1e-6 * spread(2)) || spread(2) <= 0) return std::nullopt;
-  // Umeyama without scale is exactly SPEC's closed form: W = U S V^T, R = U V^T with the
+  // Umeyama without scale is exactly the paper's closed form: W = U S V^T, R = U V^T with the
   // reflection fix, t = p_c - R p'_c.
   Eigen::Isometry3d T;
   T.matrix() = Eigen::umeyama(src, dst, false);

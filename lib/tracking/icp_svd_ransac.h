@@ -1,6 +1,6 @@
 #pragma once
-// Closed-form rigid alignment of 3D-3D pairs (SPEC section 2: "closed-form ICP") inside
-// RANSAC with the 3-point minimal set.
+// Closed-form rigid alignment of 3D-3D pairs (the paper's closed-form ICP,
+// docs/method.md#matching-and-pose) inside RANSAC with the 3-point minimal set.
 #include <Eigen/Geometry>
 #include <optional>
 #include <vector>

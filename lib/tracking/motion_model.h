@@ -1,6 +1,7 @@
 #pragma once
-// Motion models over stamped poses T_w_c (SPEC section 2): the constant-velocity guess used
-// for every frame, and the linearly changing velocity used when tracking fails.
+// Motion models over stamped poses T_w_c (docs/method.md#matching-and-pose): the
+// constant-velocity guess used for every frame, and the linearly changing velocity used when
+// tracking fails.
 #include <Eigen/Geometry>
 
 #include "core/trajectory.h"
@@ -28,9 +29,9 @@ StampedVelocity extrapolate_velocity(const StampedVelocity& older, const Stamped
 // rotation R exp([v.angular dt]x), dt = t - last.stamp.
 Eigen::Isometry3d integrate_velocity(const StampedPose& last, const StampedVelocity& v, double t);
 
-// SPEC's model for tracking failures: the velocity changes linearly in time. `older` and
-// `newer` are the two measured velocities (SPEC: when the current frame is a keyframe, those
-// of the 2 frames before it, i.e. velocity_between(f[k-3], f[k-2]) and (f[k-2], f[k-1]);
+// The paper's model for tracking failures: the velocity changes linearly in time. `older` and
+// `newer` are the two measured velocities (the paper's: when the current frame is a keyframe,
+// those of the 2 frames before it, i.e. velocity_between(f[k-3], f[k-2]) and (f[k-2], f[k-1]);
 // otherwise those of the 2 keyframes before it, each over the interval ending at that
 // keyframe). The velocity line is evaluated at the midpoint of [last.stamp, t] and
 // integrated from `last`, which is exact for a constant linear acceleration and a constant

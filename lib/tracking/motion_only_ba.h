@@ -1,6 +1,6 @@
 #pragma once
-// Motion-only bundle adjustment (SPEC section 2, "Refinement"): the current pose refined on
-// the reprojection error of its matched points, with outliers re-classified between rounds
+// Motion-only bundle adjustment (docs/method.md#matching-and-pose): the current pose refined
+// on the reprojection error of its matched points, with outliers re-classified between rounds
 // as ORB-SLAM2's PoseOptimization does.
 #include <Eigen/Geometry>
 #include <vector>

@@ -18,7 +18,7 @@ struct Step {
 };
 
 // The paper's own Gauss-Newton step: the 6x6 normal equations (sum h h^T) x = -sum m h
-// solved by Cholesky, as SPEC prescribes (hand-written because it is the paper's method;
+// solved by Cholesky, as the paper does (hand-written because it is the paper's method;
 // every other non-linear least squares in slamkit uses Ceres). The system is first made
 // comparable between scenes: per pair, with rotations measured as the displacement they
 // cause at the RMS point distance, so each eigenvalue is the share of the unit

@@ -1,6 +1,6 @@
 #pragma once
-// Dense point-to-plane alignment of two depth images (SPEC section 2), the paper's fallback
-// when there are too few 3D pairs for the closed form.
+// Dense point-to-plane alignment of two depth images (docs/method.md#matching-and-pose), the
+// paper's fallback when there are too few 3D pairs for the closed form.
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
-// The normal equations of one Gauss-Newton step of dense point-to-plane alignment (SPEC
-// section 2): projective association of every current point with the previous surface, and
-// the sums of the linearised cost's rows.
+// The normal equations of one Gauss-Newton step of dense point-to-plane alignment
+// (docs/method.md#matching-and-pose): projective association of every current point with the
+// previous surface, and the sums of the linearised cost's rows.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>

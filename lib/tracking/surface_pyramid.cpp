@@ -61,7 +61,7 @@ Surface make_surface(const cv::Mat& depth, const Camera& cam,
       src[u] += none;
     }
   }
-  // SPEC: N = (q(u+1,v) - q(u,v)) x (q(u,v+1) - q(u,v)), normalised. (beyond) Central
+  // The paper: N = (q(u+1,v) - q(u,v)) x (q(u,v+1) - q(u,v)), normalised. (beyond) Central
   // differences q(u+1,v) - q(u-1,v) etc. leave q's own noise out of its normal: with forward
   // differences the two are correlated, which on noisy smoothed depth biases each frame's
   // rotation the same way (measured by a test: 0.030 deg a frame, central 0.005 deg).

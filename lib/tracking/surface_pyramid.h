@@ -1,7 +1,7 @@
 #pragma once
 // The camera-frame points and normals of a depth image at each level of its pyramid: what
-// dense point-to-plane alignment reads (SPEC section 2). Built once per frame, they serve as
-// the current surface and again, one frame later, as the previous one.
+// dense point-to-plane alignment reads (docs/method.md#matching-and-pose). Built once per
+// frame, they serve as the current surface and again, one frame later, as the previous one.
 #include <Eigen/Core>
 #include <cmath>
 #include <opencv2/core.hpp>

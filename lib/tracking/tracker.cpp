@@ -356,7 +356,7 @@ void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
 }
 
 Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
-  // SPEC: a frame that is not a keyframe takes the mean velocities of the 2 keyframes
+  // The paper's rule: a frame that is not a keyframe takes the mean velocities of the 2 keyframes
   // before it, each over the interval that ends at that keyframe.
   std::vector<StampedVelocity> velocities;
   const auto& keyframes = map_.keyframes();

@@ -1,9 +1,9 @@
 #pragma once
-// The front end's state and its per-frame recipe (SPEC sections 2 and 3). Each step is a
-// solver function of its own (tracking/*.h); this class chooses between them and keeps what
-// must persist from frame to frame: the recent poses and the keyframe codes. It reads the map
-// (the local map is the covisible keyframes' points) and counts which points it saw; the
-// back end (lib/mapping) inserts the keyframes it asks for.
+// The front end's state and its per-frame recipe (docs/method.md#matching-and-pose and
+// docs/method.md#keyframes). Each step is a solver function of its own (tracking/*.h); this
+// class chooses between them and keeps what must persist from frame to frame: the recent poses
+// and the keyframe codes. It reads the map (the local map is the covisible keyframes' points)
+// and counts which points it saw; the back end (lib/mapping) inserts the keyframes it asks for.
 #include <map>
 #include <vector>
 
