@@ -49,8 +49,8 @@ TEST(SettingsReference, CommittedDocIsTheGeneratorsOutput) {
   const std::string generated = settings_reference_markdown();
   EXPECT_TRUE(committed == generated)
       << doc.string() << " is out of date with the settings (a default in lib/core/settings or a "
-      << "range or note in lib/io/settings_fields.h changed); regenerate it:\n  " << SLAMKIT_BINARY
-      << " settings --markdown > " << doc.string() << "\nfirst difference, "
+      << "range or note in lib/io/settings_fields.h changed); build slamkit and regenerate it:\n  "
+      << SLAMKIT_BINARY << " settings --markdown > " << doc.string() << "\nfirst difference, "
       << first_difference(committed, generated);
 }
 
