@@ -19,7 +19,7 @@ class YamlWriter {
   explicit YamlWriter(YAML::Emitter& out) : out_(out) {}
 
   template <class T>
-  void field(const char* name, T& value) {
+  void field(const char* name, T& value, const SettingNote&) {
     out_ << YAML::Key << name << YAML::Value;
     if constexpr (std::is_enum_v<T>) {
       out_ << name_of(enum_names(value), value);
@@ -31,12 +31,12 @@ class YamlWriter {
   }
 
   template <class T>
-  void field(const char* name, T& value, const Range&) {
-    field(name, value);
+  void field(const char* name, T& value, const Range&, const SettingNote& note) {
+    field(name, value, note);
   }
 
   template <class S>
-  void section(const char* name, S& settings) {
+  void section(const char* name, S& settings, const char*) {
     out_ << YAML::Key << name << YAML::Value << YAML::BeginMap;
     visit_fields(settings, *this);
     out_ << YAML::EndMap;
@@ -52,21 +52,21 @@ class YamlReader {
       : node_(node), prefix_(std::move(prefix)), path_(path) {}
 
   template <class T>
-  void field(const char* name, T& value) {
+  void field(const char* name, T& value, const SettingNote&) {
     // Numbers with limits take a range (settings_fields.h); only these need none.
     static_assert(std::is_same_v<T, bool> || std::is_enum_v<T> || std::is_unsigned_v<T>);
     read(name, value);
   }
 
   template <class T>
-  void field(const char* name, T& value, const Range& range) {
+  void field(const char* name, T& value, const Range& range, const SettingNote&) {
     const YAML::Node child = read(name, value);
     if (child && !in_range(double(value), range))
       fail(child, prefix_ + name + ": " + child.Scalar() + " is outside " + range_text(range));
   }
 
   template <class S>
-  void section(const char* name, S& settings) {
+  void section(const char* name, S& settings, const char*) {
     const YAML::Node child = take(name);
     if (!child) return;
     if (!child.IsMap()) fail(child, prefix_ + name + " must be a map of settings");
@@ -126,12 +126,16 @@ class FieldFinder {
   explicit FieldFinder(const std::string& dotted) : dotted_(dotted) {}
 
   template <class T>
-  void field(const char* name, T&, const Range& = {}) {
+  void field(const char* name, T&, const SettingNote&) {
     found_ = found_ || prefix_ + name == dotted_;
+  }
+  template <class T>
+  void field(const char* name, T& value, const Range&, const SettingNote& note) {
+    field(name, value, note);
   }
 
   template <class S>
-  void section(const char* name, S& settings) {
+  void section(const char* name, S& settings, const char*) {
     const std::string outer = prefix_;
     prefix_ += std::string(name) + ".";
     if (dotted_.rfind(prefix_, 0) == 0) visit_fields(settings, *this);

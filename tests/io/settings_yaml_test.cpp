@@ -117,15 +117,15 @@ TEST(SettingsYaml, RangeBoundsThemselvesAreAccepted) {
 class DefaultChecker {
  public:
   template <class T>
-  void field(const char*, T&) {}
+  void field(const char*, T&, const SettingNote&) {}
   template <class T>
-  void field(const char* name, T& value, const Range& range) {
+  void field(const char* name, T& value, const Range& range, const SettingNote&) {
     ++checked;
     EXPECT_TRUE(in_range(double(value), range))
         << prefix_ << name << " = " << value << " is outside " << range_text(range);
   }
   template <class S>
-  void section(const char* name, S& settings) {
+  void section(const char* name, S& settings, const char*) {
     const std::string outer = prefix_;
     prefix_ += std::string(name) + ".";
     visit_fields(settings, *this);

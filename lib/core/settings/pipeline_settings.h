@@ -1,5 +1,5 @@
 #pragma once
-// Batch engine settings.
+// Batch engine settings (docs/method.md#architecture).
 
 namespace slamkit {
 
@@ -10,10 +10,10 @@ enum class LostFrames {
 };
 
 struct PipelineSettings {
-  int threads = 0;         // OpenMP threads for the parallel stages; 0 = all cores
-  int chunk_frames = 32;   // frames prepared in parallel at a time (bounds memory)
-  bool evaluate = true;    // with groundtruth, compute ATE/RPE at the end of a run
-  LostFrames lost_frames = LostFrames::kOmit;
+  int threads = 0;        // (slamkit) OpenMP threads for the parallel stages; 0 = all cores
+  int chunk_frames = 32;  // (slamkit) frames prepared in parallel at a time (bounds memory)
+  bool evaluate = true;   // (slamkit) with groundtruth, compute ATE/RPE at the end of a run
+  LostFrames lost_frames = LostFrames::kOmit;  // (ORB-SLAM2)
 };
 
 }  // namespace slamkit

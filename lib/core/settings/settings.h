@@ -1,6 +1,7 @@
 #pragma once
-// Every setting of a run, one struct per module, with the SPEC's defaults. A run writes the
-// settings it used (settings.yaml) so that any result can be reproduced.
+// Every setting of a run, one struct per module. Each default is tagged with its source:
+// (paper), (ORB-SLAM2) or (slamkit) (docs/method.md#sources). A run writes the settings it used
+// (settings.yaml) so that any result can be reproduced.
 #include "core/settings/fusion_settings.h"
 #include "core/settings/keyframe_settings.h"
 #include "core/settings/loop_settings.h"
