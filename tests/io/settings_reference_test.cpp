@@ -54,12 +54,6 @@ TEST(SettingsReference, CommittedDocIsTheGeneratorsOutput) {
       << first_difference(committed, generated);
 }
 
-TEST(SettingsReference, CliPrintsTheReference) {
-  const test::SlamkitResult result = test::run_slamkit_apart("settings --markdown");
-  EXPECT_EQ(result.code, 0) << result.err;
-  EXPECT_EQ(result.out, settings_reference_markdown());
-}
-
 TEST(SettingsReference, HasARowPerFieldInATablePerSection) {
   const std::string markdown = settings_reference_markdown();
   EXPECT_NE(markdown.find("| `tracking.ransac.seed` | `42` | 0..4294967295 | slamkit |"),
@@ -189,15 +183,12 @@ TEST(SettingsFields, EveryKeySetFromYamlChangesThatFieldAlone) {
   }
 }
 
-TEST(SettingsCommand, PrintsEveryDefaultAsASettingsFile) {
-  const test::SlamkitResult result = test::run_slamkit_apart("settings");
-  EXPECT_EQ(result.code, 0) << result.err;
-  ASSERT_EQ(result.out, settings_yaml_text(Settings{}));
-  // Read over settings whose every field differs, it gives back every default.
+// `slamkit settings` prints this text (tests/cli/settings_command_e2e_test.cpp).
+TEST(SettingsYamlText, ReadOverOtherSettingsGivesBackEveryDefault) {
   Settings changed;
   ValueChanger changer;
   visit_fields(changed, changer);
-  read_settings_node(YAML::Load(result.out), "settings output", changed);
+  read_settings_node(YAML::Load(settings_yaml_text(Settings{})), "settings output", changed);
   EXPECT_EQ(settings_yaml_text(changed), settings_yaml_text(Settings{}));
 }
 
