@@ -9,6 +9,7 @@
 
 #include "bin/command.h"
 #include "bin/eval_run.h"
+#include "bin/output_folder.h"
 #include "eval/association.h"
 #include "eval/ate.h"
 #include "eval/compare.h"
@@ -107,6 +108,7 @@ void add_rpe_options(CLI::App* cmd, EvalArgs& a) {
 }
 
 void run_compare(const CompareArgs& args) {
+  check_output_folder("--out", args.out_dir);
   std::vector<fs::path> dirs(args.runs.begin(), args.runs.end());
   const std::vector<eval::EvaluatedRun> runs = eval::load_runs(dirs);
   const fs::path out(args.out_dir);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "datasets/synth/trajectory_presets.h"
 #include "eval/regression/regression.h"
 
@@ -43,6 +44,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--history", o.history_file,
                   "History file to append to (default: <suite folder>/history.csv)");
   cmd->callback([args] {
+    check_output_folder("--out", args->options.out);
     regress::RegressOptions options = args->options;
     const char* env = std::getenv("SLAMKIT_DATA");
     if (!args->data.empty())

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "core/error.h"
 #include "eval/association.h"
 #include "eval/ate.h"
@@ -215,6 +216,8 @@ bool draw_plots(const EvalArgs& a, const json& figures) {
 }  // namespace
 
 void run_eval(EvalArgs& a, bool do_ate, bool do_rpe) {
+  if (!a.out_dir.empty()) check_output_folder("--out", a.out_dir);
+  if (!a.plot_dir.empty()) check_output_folder("--plot", a.plot_dir);
   const Rules rules = resolve_rules(a);
   a.rpe.unit = eval::parse_delta_unit(a.unit);
   a.rpe.offset = a.offset;
