@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "eval/association.h"
 #include "eval/ate.h"
 #include "eval/compare.h"
@@ -28,6 +29,8 @@ using nlohmann::json;
 
 // A requested plot that was not drawn ends the command with exit code 1.
 void evaluate_or_exit(eval::EvaluationRequest& request, bool do_ate, bool do_rpe) {
+  if (!request.out_dir.empty()) check_output_folder("--out", request.out_dir);
+  if (!request.plot_dir.empty()) check_output_folder("--plot", request.plot_dir);
   if (!eval::run_evaluation(request, do_ate, do_rpe)) throw ExitCode{1};
 }
 
@@ -112,6 +115,7 @@ void add_rpe_options(CLI::App* cmd, eval::EvaluationRequest& a) {
 }
 
 void run_compare(const CompareArgs& args) {
+  check_output_folder("--out", args.out_dir);
   std::vector<fs::path> dirs(args.runs.begin(), args.runs.end());
   const std::vector<eval::EvaluatedRun> runs = eval::load_runs(dirs);
   const fs::path out(args.out_dir);

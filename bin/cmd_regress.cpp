@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "datasets/synth/trajectory_presets.h"
 #include "eval/regression/regression.h"
 
@@ -32,7 +33,11 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("--update-baselines", o.update_baselines,
-                "Store this run's metrics as the baselines and print what changed");
+                "Store this run's metrics as the baselines, print what changed, and record the "
+                "run in <suite folder>/history.csv");
+  cmd->add_flag("--record", o.record,
+                "Append this run to <suite folder>/history.csv, the tracked history (kept "
+                "unchanged otherwise)");
   cmd->add_flag("--force", o.force, "Run every entry again, even when a finished run exists");
   cmd->add_option("--data", args->data,
                   "Data folder for relative sequence folders and TUM downloads "
@@ -41,8 +46,9 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--baselines", o.baselines_dir,
                   "Baseline folder (default: <suite folder>/baselines/<suite name>)");
   cmd->add_option("--history", o.history_file,
-                  "History file to append to (default: <suite folder>/history.csv)");
+                  "This run's history file, appended to (default: <out>/history.csv)");
   cmd->callback([args] {
+    check_output_folder("--out", args->options.out);
     regress::RegressOptions options = args->options;
     const char* env = std::getenv("SLAMKIT_DATA");
     if (!args->data.empty())

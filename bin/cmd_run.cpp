@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
 #include "eval/ate.h"
@@ -29,6 +30,7 @@ struct RunArgs {
   bool ascii = false;
   bool loops = true;
   std::string vocabulary_file;
+  bool allow_out_in_sequence = false;
   SequenceOptions sequence;
 };
 
@@ -80,6 +82,8 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
 }
 
 void run(const RunArgs& args) {
+  check_output_folder("--out", args.out);
+  check_output_outside_sequences("--out", args.out, {args.folder}, args.allow_out_in_sequence);
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
@@ -132,6 +136,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
                   "Vocabulary file (slamkit vocab train, or ORB-SLAM2's ORBvoc.txt); default: "
                   "one trained on the run's keyframes");
   add_sequence_options(cmd, args->sequence);
+  add_allow_out_in_sequence_flag(cmd, args->allow_out_in_sequence);
   cmd->callback([args] { run(*args); });
 });
 

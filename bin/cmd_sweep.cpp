@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "core/error.h"
 #include "datasets/synth/trajectory_presets.h"
 #include "eval/regression/regression.h"
@@ -68,6 +69,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
                    "Data folder for relative sequence folders and TUM downloads "
                    "(default: $SLAMKIT_DATA); recorded in the plan");
   plan->callback([args] {
+    check_output_folder("--out", args->dir);
     finish([&] { return sweep::plan_sweep(args->sweep_file, args->dir, environment(*args)); });
   });
 

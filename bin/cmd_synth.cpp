@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "core/progress.h"
 #include "datasets/synth/room_layout.h"
 #include "datasets/synth/sequence_writer.h"
@@ -20,6 +21,7 @@ struct SynthArgs {
 };
 
 void run_synth(const SynthArgs& args) {
+  check_output_folder("--out", args.out);
   const auto start = std::chrono::steady_clock::now();
   synth::SequenceSpec spec;
   spec.preset = synth::parse_preset(args.preset);

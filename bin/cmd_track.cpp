@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
 #include "eval/run/run_evaluation.h"
@@ -24,10 +25,13 @@ struct TrackArgs {
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
   bool plot = true;
+  bool allow_out_in_sequence = false;
   SequenceOptions sequence;
 };
 
 void track(const TrackArgs& args) {
+  check_output_folder("--out", args.out);
+  check_output_outside_sequences("--out", args.out, {args.folder}, args.allow_out_in_sequence);
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
@@ -67,6 +71,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
   add_lost_frames_option(cmd, args->lost_frames);
   add_sequence_options(cmd, args->sequence);
+  add_allow_out_in_sequence_flag(cmd, args->allow_out_in_sequence);
   cmd->callback([args] { track(*args); });
 });
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/output_folder.h"
 #include "bin/sequence_options.h"
 #include "core/stopwatch.h"
 #include "io/settings_yaml.h"
@@ -25,6 +26,7 @@ struct TrainArgs {
   std::string settings_file;
   std::optional<int> branching, depth, frame_step;
   int threads = -1;
+  bool allow_out_in_sequence = false;
   SequenceOptions sequence;
 };
 
@@ -40,6 +42,8 @@ void print_vocabulary(const Vocabulary& v) {
 }
 
 void train(const TrainArgs& args) {
+  check_output_file("--out", args.out);
+  check_output_outside_sequences("--out", args.out, args.folders, args.allow_out_in_sequence);
   Settings settings;
   if (!args.settings_file.empty()) read_settings_yaml(args.settings_file, settings);
   VocabularySettings& vs = settings.vocabulary;
@@ -100,6 +104,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   train_cmd->add_option("--threads", args->threads, "Threads (0 = all cores)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));
   add_sequence_options(train_cmd, args->sequence);
+  add_allow_out_in_sequence_flag(train_cmd, args->allow_out_in_sequence);
   train_cmd->callback([args] { train(*args); });
 
   auto file = std::make_shared<std::string>();

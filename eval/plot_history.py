@@ -1,7 +1,8 @@
-"""ATE RMSE of each entry of a regression suite over slamkit versions, from the history file
-`slamkit regress` appends to (results/history.csv): ate_history.png / .svg.
+"""ATE RMSE of each entry of a regression suite over slamkit versions, from the history files
+`slamkit regress` appends to (the suite's tracked results/history.csv, then the run's own):
+ate_history.png / .svg.
 
-Versions are placed in the order they first appear in the file; a version run several times
+Versions are placed in the order they first appear in the files; a version run several times
 shows its latest value."""
 import csv
 
@@ -9,15 +10,17 @@ from plot_style import new_figure, save
 
 
 def plot_history(request):
-    """Request: history (history.csv), suite (the 'suite' column), out, pdf."""
+    """Request: histories (history.csv files, oldest first), suite (the 'suite' column), out,
+    pdf."""
     versions, series = [], {}
-    with open(request["history"], newline="") as f:
-        for row in csv.DictReader(f):
-            if row["suite"] != request["suite"] or not row.get("ate_rmse"):
-                continue
-            if row["version"] not in versions:
-                versions.append(row["version"])
-            series.setdefault(row["entry"], {})[row["version"]] = 1000 * float(row["ate_rmse"])
+    for history in request["histories"]:
+        with open(history, newline="") as f:
+            for row in csv.DictReader(f):
+                if row["suite"] != request["suite"] or not row.get("ate_rmse"):
+                    continue
+                if row["version"] not in versions:
+                    versions.append(row["version"])
+                series.setdefault(row["entry"], {})[row["version"]] = 1000 * float(row["ate_rmse"])
 
     fig, ax = new_figure((max(6.0, 0.9 * len(versions) + 3.0), 4.2))
     for entry, by_version in sorted(series.items()):

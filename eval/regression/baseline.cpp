@@ -22,6 +22,12 @@ std::string trimmed(std::string s) {
   return s;
 }
 
+// "CPU, N cores, Linux release" -> "CPU, N cores".
+std::string hardware(const std::string& machine) {
+  const size_t cores = machine.find(" cores");
+  return cores == std::string::npos ? machine : machine.substr(0, cores);
+}
+
 }  // namespace
 
 std::optional<Baseline> read_baseline(const fs::path& file) {
@@ -93,6 +99,10 @@ std::string machine_description() {
   utsname name{};
   if (uname(&name) == 0) text += std::string(", ") + name.sysname + " " + name.release;
   return text;
+}
+
+bool same_machine(const std::string& a, const std::string& b) {
+  return !a.empty() && hardware(a) == hardware(b);
 }
 
 }  // namespace slamkit::regress

@@ -35,4 +35,9 @@ void write_baseline(const std::filesystem::path& file, const Baseline& baseline)
 std::string slamkit_version();
 std::string machine_description();
 
+// Whether two machine_description()s name the same hardware (CPU model and cores): timing is
+// comparable between them. The kernel is left out: it changes with every update, the hardware
+// that sets the timing does not. An empty description (unknown) matches nothing.
+bool same_machine(const std::string& a, const std::string& b);
+
 }  // namespace slamkit::regress

@@ -19,6 +19,8 @@ const char* verdict_name(Verdict v) {
       return "MISSING";
     case Verdict::kNew:
       return "no baseline";
+    case Verdict::kOtherMachine:
+      return "other machine";
   }
   return "";
 }
@@ -50,7 +52,8 @@ MetricComparison compare_metric(const MetricInfo& metric, std::optional<double> 
 }
 
 std::vector<MetricComparison> compare_metrics(const RunMetrics& run, const RunMetrics* baseline,
-                                              const std::map<std::string, Tolerance>& tolerances) {
+                                              const std::map<std::string, Tolerance>& tolerances,
+                                              bool same_machine) {
   std::vector<MetricComparison> out;
   for (const MetricInfo& m : tracked_metrics()) {
     std::optional<double> value, base;
@@ -59,8 +62,11 @@ std::vector<MetricComparison> compare_metrics(const RunMetrics& run, const RunMe
       if (auto it = baseline->find(m.key); it != baseline->end()) base = it->second;
     if (!value && !base) continue;
     const auto tolerance = tolerances.find(m.key);
-    out.push_back(compare_metric(m, value, base,
-                                 tolerance != tolerances.end() ? tolerance->second : m.tolerance));
+    MetricComparison c = compare_metric(
+        m, value, base, tolerance != tolerances.end() ? tolerance->second : m.tolerance);
+    if (m.warn_only && !same_machine && c.verdict != Verdict::kNew)
+      c.verdict = Verdict::kOtherMachine;
+    out.push_back(c);
   }
   return out;
 }

@@ -68,7 +68,7 @@ void append_history(const fs::path& file, const SuiteReport& report) {
   }
 }
 
-void draw_suite_plots(const fs::path& history, SuiteReport& report) {
+void draw_suite_plots(const std::vector<fs::path>& histories, SuiteReport& report) {
   nlohmann::json compare = {{"figure", "compare"},
                             {"out", report.out.string()},
                             {"title", report.suite->name},
@@ -78,9 +78,12 @@ void draw_suite_plots(const fs::path& history, SuiteReport& report) {
       compare["runs"].push_back({e.entry->name, e.run.dir.string()});
   nlohmann::json figures = nlohmann::json::array();
   if (!compare["runs"].empty()) figures.push_back(compare);
-  if (fs::exists(history))
+  nlohmann::json history_files = nlohmann::json::array();
+  for (const fs::path& history : histories)
+    if (fs::exists(history)) history_files.push_back(history.string());
+  if (!history_files.empty())
     figures.push_back({{"figure", "history"},
-                       {"history", history.string()},
+                       {"histories", history_files},
                        {"suite", report.suite->name},
                        {"out", report.out.string()}});
   if (figures.empty()) return;
@@ -90,7 +93,7 @@ void draw_suite_plots(const fs::path& history, SuiteReport& report) {
     return;
   }
   if (!compare["runs"].empty()) report.comparison_plot = report.out / "ate_comparison.png";
-  if (fs::exists(history)) report.history_plot = report.out / "ate_history.png";
+  if (!history_files.empty()) report.history_plot = report.out / "ate_history.png";
 }
 
 }  // namespace slamkit::regress

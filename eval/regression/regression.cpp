@@ -14,12 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-EntryResult evaluate_entry(const SuiteEntry& entry, const EntryRun& run,
-                           const fs::path& baselines) {
+EntryResult evaluate_entry(const SuiteEntry& entry, const EntryRun& run, const fs::path& baselines,
+                           const std::string& machine) {
   EntryResult r;
   r.entry = &entry;
   r.run = run;
   r.baseline = read_baseline(baselines / (entry.name + ".json"));
+  r.baseline_same_machine = r.baseline && same_machine(r.baseline->provenance.machine, machine);
   if (!run.ok) return r;
   try {
     r.metrics = read_run_metrics(run.dir);
@@ -30,8 +31,8 @@ EntryResult evaluate_entry(const SuiteEntry& entry, const EntryRun& run,
     r.run.error = std::string("unreadable results: ") + e.what();
     return r;
   }
-  r.comparisons =
-      compare_metrics(r.metrics, r.baseline ? &r.baseline->metrics : nullptr, entry.tolerances);
+  r.comparisons = compare_metrics(r.metrics, r.baseline ? &r.baseline->metrics : nullptr,
+                                  entry.tolerances, r.baseline_same_machine);
   return r;
 }
 
@@ -69,6 +70,18 @@ void update_baselines(const SuiteReport& report, const fs::path& dir) {
   }
 }
 
+const char* machine_or_unknown(const std::string& machine) {
+  return machine.empty() ? "an unrecorded machine" : machine.c_str();
+}
+
+void print_history_line(const fs::path& run_history, const fs::path& suite_history, bool recorded) {
+  if (recorded)
+    std::printf("history     %s, and recorded in %s\n", run_history.c_str(), suite_history.c_str());
+  else
+    std::printf("history     %s (%s unchanged: --record appends to it)\n", run_history.c_str(),
+                suite_history.c_str());
+}
+
 void print_summary(const SuiteReport& report) {
   for (const EntryResult& e : report.entries) {
     if (!e.run.ok) {
@@ -85,6 +98,11 @@ void print_summary(const SuiteReport& report) {
     if (!e.baseline && !report.baselines_updated)
       std::printf("note        %s: no baseline (--update-baselines writes it)\n",
                   e.entry->name.c_str());
+    if (e.baseline && !e.baseline_same_machine)
+      std::printf(
+          "note        %s: timing not compared: the baseline was measured on %s, this is %s\n",
+          e.entry->name.c_str(), machine_or_unknown(e.baseline->provenance.machine),
+          report.current.machine.c_str());
   }
 }
 
@@ -115,8 +133,9 @@ int run_regression(const RegressOptions& options) {
   const fs::path suite_dir = options.suite_file.parent_path();
   const fs::path baselines =
       options.baselines_dir.empty() ? suite_dir / "baselines" / suite.name : options.baselines_dir;
-  const fs::path history =
-      options.history_file.empty() ? suite_dir / "history.csv" : options.history_file;
+  const fs::path suite_history = suite_dir / "history.csv";
+  const fs::path run_history =
+      options.history_file.empty() ? options.out / "history.csv" : options.history_file;
   // Baselines are read before anything runs: a malformed one fails at once.
   for (const SuiteEntry& e : suite.entries) read_baseline(baselines / (e.name + ".json"));
 
@@ -134,14 +153,24 @@ int run_regression(const RegressOptions& options) {
   report.out = options.out;
   report.current = {slamkit_version(), "", machine_description(), utc_now_iso()};
   for (size_t i = 0; i < suite.entries.size(); ++i)
-    report.entries.push_back(evaluate_entry(suite.entries[i], runs[i], baselines));
+    report.entries.push_back(
+        evaluate_entry(suite.entries[i], runs[i], baselines, report.current.machine));
 
   if (options.update_baselines) {
     update_baselines(report, baselines);
     report.baselines_updated = true;
   }
-  append_history(history, report);
-  draw_suite_plots(history, report);
+  append_history(run_history, report);
+  const bool record = options.record || options.update_baselines;
+  if (record) append_history(suite_history, report);  // a run already in it is not added twice
+  const bool run_history_is_tracked =
+      fs::exists(suite_history) && fs::equivalent(suite_history, run_history);
+  print_history_line(run_history, suite_history, record || run_history_is_tracked);
+  // The trend: the tracked history, then this run's rows (the same rows twice draw once).
+  std::vector<fs::path> histories;
+  if (fs::exists(suite_history) && !run_history_is_tracked) histories.push_back(suite_history);
+  histories.push_back(run_history);
+  draw_suite_plots(histories, report);
   write_report_markdown(options.out / "report.md", report);
   write_report_html(options.out / "report.html", report);
   write_junit(options.out / "junit.xml", report);

@@ -13,11 +13,14 @@ struct RegressOptions {
   std::filesystem::path out;
   std::optional<std::filesystem::path> data_dir;  // relative folders, TUM downloads
   std::filesystem::path baselines_dir;            // empty: <suite folder>/baselines/<suite name>
-  std::filesystem::path history_file;             // empty: <suite folder>/history.csv
+  std::filesystem::path history_file;             // this run's; empty: <out>/history.csv
   int jobs = 1;
   int threads = 0;  // per run; 0: the cores shared out among the jobs
   bool force = false;
   bool update_baselines = false;
+  // Also append to <suite folder>/history.csv, the tracked history (as update_baselines does):
+  // otherwise a checkout stays clean after a run.
+  bool record = false;
   bool download = true;
   std::filesystem::path slamkit;          // the executable that runs the entries
   std::filesystem::path download_script;  // datasets/download_tum.sh

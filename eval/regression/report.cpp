@@ -22,7 +22,7 @@ std::string css_class(const std::string& verdict) {
   if (verdict == "ERROR" || verdict == "REGRESSED" || verdict == "MISSING") return "fail";
   if (verdict == "improved") return "improved";
   if (verdict.find("warning") != std::string::npos) return "warn";
-  if (verdict == "no baseline") return "none";
+  if (verdict == "no baseline" || verdict == "other machine") return "none";
   return "pass";
 }
 
@@ -49,6 +49,7 @@ std::string baseline_origin(const EntryResult& e) {
                      "; settings hash " + p.settings_hash;
   if (!e.settings_hash.empty() && e.settings_hash != p.settings_hash)
     text += " (this run's settings differ: " + e.settings_hash + ")";
+  if (!e.baseline_same_machine) text += "; timing not compared: another machine";
   return text + ".";
 }
 

@@ -19,6 +19,7 @@ struct EntryResult {
   RunMetrics metrics;
   std::string settings_hash;         // of the run's settings.yaml
   std::optional<Baseline> baseline;  // as it was before this run
+  bool baseline_same_machine = false;  // its timing is judged only then
   std::vector<MetricComparison> comparisons;
 
   bool failed() const;  // the run failed or a metric regressed or went missing
@@ -49,8 +50,9 @@ void write_junit(const std::filesystem::path& file, const SuiteReport& report);
 void append_history(const std::filesystem::path& file, const SuiteReport& report);
 
 // The suite's plots, drawn by eval's plot.py in one process: the box plot across entries
-// (ate_comparison.png) and ATE over versions (ate_history.png). Sets report.comparison_plot
-// and report.history_plot to the PNGs drawn; a note on stderr says why when none were.
-void draw_suite_plots(const std::filesystem::path& history, SuiteReport& report);
+// (ate_comparison.png) and ATE over versions (ate_history.png) from the history files read in
+// order. Sets report.comparison_plot and report.history_plot to the PNGs drawn; a note on
+// stderr says why when none were.
+void draw_suite_plots(const std::vector<std::filesystem::path>& histories, SuiteReport& report);
 
 }  // namespace slamkit::regress

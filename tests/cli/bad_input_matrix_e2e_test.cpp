@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <functional>
+#include <map>
 #include <opencv2/core.hpp>
 
 #include "io/png_file.h"
@@ -331,6 +332,92 @@ TEST(BadInputMatrix, VocabAndRunVocabulary) {
        "run " + s.good().string() + " --out " + (s.root() / "out").string() + " --vocabulary " +
            future.string(),
        future});
+}
+
+// Every file of a folder with its size: what a command must leave alone.
+std::map<std::string, uintmax_t> files_of(const fs::path& folder) {
+  std::map<std::string, uintmax_t> files;
+  for (const auto& e : fs::recursive_directory_iterator(folder))
+    files[e.path().string()] = e.is_regular_file() ? e.file_size() : 0;
+  return files;
+}
+
+// An output path that exists as a file, or lies under one, is named in slamkit's words.
+TEST(BadInputMatrix, OutputPathThatIsAFile) {
+  Sequences s;
+  const fs::path file = s.root() / "a_file";
+  write(file, "");
+  const std::string seq = s.good().string() + " ", gt = (s.good() / "groundtruth.txt").string();
+  for (const fs::path& out : {file, file / "x"}) {
+    const std::string o = " --out " + out.string();
+    for (const std::string& args :
+         {"run " + seq + o, "track " + seq + o, "synth --frames 2" + o,
+          "regress " + (s.root() / "suite.yaml").string() + o, "eval ate " + gt + " " + gt + o,
+          "eval all " + gt + " " + gt + o, "eval compare " + s.root().string() + o,
+          "sweep plan " + (s.root() / "sweep.yaml").string() + o})
+      expect_one_line_naming_the_file({"output path under a file", args, "--out " + out.string()});
+  }
+  expect_one_line_naming_the_file({"output path under a file",
+                                   "eval ate " + gt + " " + gt + " --plot " + file.string(),
+                                   "--plot " + file.string()});
+  // vocab train writes a file: one under a file, or a folder there, is refused.
+  expect_one_line_naming_the_file({"output path under a file",
+                                   "vocab train " + seq + "--out " + (file / "x").string(),
+                                   "--out " + (file / "x").string()});
+  expect_one_line_naming_the_file({"output path that is a folder",
+                                   "vocab train " + seq + "--out " + s.root().string(),
+                                   "--out " + s.root().string()});
+  const test::SlamkitResult r = test::run_slamkit_apart("run " + seq + "--out " + file.string());
+  EXPECT_EQ(r.err, "slamkit: error: --out " + file.string() + ": exists and is not a folder\n");
+}
+
+// Run files among the sequence's own are refused, however the folder is spelled.
+TEST(BadInputMatrix, OutputInsideTheSequence) {
+  Sequences s;
+  const fs::path good = s.good(), link = s.root() / "link";
+  fs::create_directory_symlink(good, link);
+  const auto before = files_of(good);
+  struct Spelling {
+    fs::path sequence, out;
+  };
+  const std::vector<Spelling> spellings = {
+      {good, good},
+      {good, good / "out"},
+      {good, good / "rgb" / ".." / "out"},
+      {good, link / "out"},
+      {link, good / "out"},
+      {s.root() / "x" / ".." / "good", good / "deeper" / "out"},
+  };
+  for (const Spelling& sp : spellings)
+    for (const char* command : {"run", "track"}) {
+      const std::string args = std::string(command) + " " + sp.sequence.string() +
+                               " --no-eval --threads 1 --out " + sp.out.string();
+      expect_one_line_naming_the_file(
+          {"output inside the sequence", args, "--out " + sp.out.string()});
+      const test::SlamkitResult r = test::run_slamkit_apart(args);
+      EXPECT_NE(r.err.find("inside the input sequence " + sp.sequence.string() + " "),
+                std::string::npos)
+          << r.err;
+    }
+  expect_one_line_naming_the_file(
+      {"output inside the sequence",
+       "vocab train " + good.string() + " --out " + (good / "words.voc").string(),
+       "--out " + (good / "words.voc").string()});
+  EXPECT_EQ(files_of(good), before);
+
+  // A sibling whose name starts with the sequence's is outside it; the flag allows inside.
+  std::string output;
+  EXPECT_EQ(test::run_slamkit(
+                "track " + good.string() + " --no-eval --threads 1 --out " + good.string() + "_out",
+                &output),
+            0)
+      << output;
+  EXPECT_EQ(test::run_slamkit("track " + good.string() + " --no-eval --threads 1 --out " +
+                                  (good / "out").string() + " --allow-out-in-sequence",
+                              &output),
+            0)
+      << output;
+  EXPECT_TRUE(fs::exists(good / "out" / "trajectory.txt"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "eval/regression/baseline.h"
 #include "eval/regression/metrics.h"
 #include "support/test_data.h"
 
@@ -40,7 +41,7 @@ TEST(Comparison, DirectionWarningsMissingAndNew) {
 TEST(Comparison, EveryMetricOfRunOrBaselineInReportOrder) {
   const RunMetrics run = {{"ate_rmse", 0.002}, {"run_seconds", 3}};
   const RunMetrics baseline = {{"ate_rmse", 0.002}, {"frames_lost", 0}};
-  const auto rows = compare_metrics(run, &baseline, {});
+  const auto rows = compare_metrics(run, &baseline, {}, true);
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].metric->key, "ate_rmse");
   EXPECT_EQ(rows[1].metric->key, "frames_lost");
@@ -48,6 +49,33 @@ TEST(Comparison, EveryMetricOfRunOrBaselineInReportOrder) {
   EXPECT_EQ(rows[2].verdict, Verdict::kNew);
   EXPECT_EQ(format_delta(compare_metric(*find_metric("ate_rmse"), 0.0021, 0.002, {})),
             "+0.00010 m (+5.0%)");
+}
+
+// Timing from other hardware says nothing about this build: not judged, while accuracy still is.
+TEST(Comparison, TimingIsJudgedOnlyAgainstABaselineFromTheSameMachine) {
+  const RunMetrics run = {{"ate_rmse", 0.009}, {"frames_per_second", 28.7}};
+  const RunMetrics baseline = {{"ate_rmse", 0.004}, {"frames_per_second", 52.5}};
+  const auto same = compare_metrics(run, &baseline, {}, true);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_EQ(same[0].verdict, Verdict::kRegressed);
+  EXPECT_EQ(same[1].verdict, Verdict::kWarning);
+  const auto other = compare_metrics(run, &baseline, {}, false);
+  ASSERT_EQ(other.size(), 2u);
+  EXPECT_EQ(other[0].verdict, Verdict::kRegressed);
+  EXPECT_EQ(other[1].verdict, Verdict::kOtherMachine);
+  EXPECT_FALSE(is_failure(Verdict::kOtherMachine));
+  // A timing with no baseline value stays new either way.
+  const RunMetrics no_timing = {{"ate_rmse", 0.004}};
+  EXPECT_EQ(compare_metrics(run, &no_timing, {}, false)[1].verdict, Verdict::kNew);
+}
+
+TEST(Comparison, SameMachineIsTheSameCpuAndCoresWhateverTheKernel) {
+  const std::string here = "AMD EPYC, 2 cores, Linux 6.18.44-fc-v1045";
+  EXPECT_TRUE(same_machine(here, "AMD EPYC, 2 cores, Linux 6.18.44-fc-v1252"));
+  EXPECT_FALSE(same_machine(here, "AMD EPYC, 4 cores, Linux 6.18.44-fc-v1045"));
+  EXPECT_FALSE(same_machine(here, "Intel(R) Xeon(R) Processor, 2 cores, Linux 6.18.44-fc-v769"));
+  EXPECT_FALSE(same_machine("", here));  // a baseline without a machine: unknown
+  EXPECT_TRUE(same_machine(machine_description(), machine_description()));
 }
 
 // A run folder left by an interrupted run (run.json not complete) gives no metrics: the

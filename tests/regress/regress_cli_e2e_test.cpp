@@ -1,6 +1,7 @@
 // `slamkit regress` end to end on a tiny synthetic suite (40 and 50 frames): baselines written
 // and met, a worse setting caught, an interrupted suite resumed with the same report, junit.xml
-// in the JUnit shape; the shipped suites against their committed baselines.
+// in the JUnit shape, the suite's history left alone unless recorded, timing judged against
+// baselines from this machine only; the shipped suites against their committed baselines.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "eval/regression/baseline.h"
 #include "support/test_data.h"
 
 namespace slamkit {
@@ -83,19 +85,18 @@ int run_regress(const std::string& arguments, std::string* output) {
   return code;
 }
 
-// Runs `slamkit regress SUITE --out OUT --history OUT/history.csv`, killing it and its `slamkit
-// run` child as soon as the first entry's run folder is finished.
+// Runs `slamkit regress SUITE --out OUT`, killing it and its `slamkit run` child as soon as the
+// first entry's run folder is finished.
 void run_and_kill_after_first_entry(const fs::path& suite, const fs::path& out) {
   fs::create_directories(out);
-  const std::string history = (out / "history.csv").string();
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
     setpgid(0, 0);  // its own process group, so the kill reaches the child runs too
     const std::string log = (out / "killed.log").string();
     if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr)) _exit(126);
-    execl(SLAMKIT_BINARY, "slamkit", "regress", suite.c_str(), "--out", out.c_str(), "--history",
-          history.c_str(), static_cast<char*>(nullptr));
+    execl(SLAMKIT_BINARY, "slamkit", "regress", suite.c_str(), "--out", out.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   setpgid(pid, pid);
@@ -116,9 +117,16 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
   const fs::path suite = dir / "tiny.yaml";
   std::ofstream(suite) << kTinySuite;
   const std::string baselines = (dir / "baselines" / "tiny").string();
+  // The suite folder's tracked history: a copy of results/history.csv.
+  const fs::path tracked = dir / "history.csv";
+  fs::copy_file(fs::path(SLAMKIT_SOURCE_DIR) / "results" / "history.csv", tracked);
+  const auto lines = [](const std::string& text) {
+    return std::count(text.begin(), text.end(), '\n');
+  };
+  const auto shipped_lines = lines(test::read_text(tracked));
   std::string output;
 
-  // Baselines, with where they came from.
+  // Baselines, with where they came from; the run is recorded in the tracked history too.
   ASSERT_EQ(
       run_regress(suite.string() + " --out " + (dir / "first").string() + " --update-baselines",
                   &output),
@@ -127,6 +135,8 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
   for (const char* key : {"\"version\"", "\"settings_hash\"", "\"machine\"", "\"date\"",
                           "\"ate_rmse\"", "\"frames_lost\"", "\"map_completeness\""})
     EXPECT_NE(baseline.find(key), std::string::npos) << key;
+  std::string tracked_text = test::read_text(tracked);
+  EXPECT_EQ(lines(tracked_text), shipped_lines + 2);
 
   {
     SCOPED_TRACE("the same suite again passes, reusing the finished runs");
@@ -143,9 +153,14 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
       ++images;
     EXPECT_GE(images, 5u);  // error over time and trajectory per entry, the box plot, history
     EXPECT_EQ(html.find("http"), std::string::npos);
-    // history.csv: a line per run, not per invocation.
-    const std::string history = test::read_text(dir / "history.csv");
-    EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 3);
+    // The run's history beside the report: a line per run, not per invocation.
+    const std::string history = test::read_text(out / "history.csv");
+    EXPECT_EQ(lines(history), 3);
+    // The suite's tracked history is the user's to change: byte-unchanged.
+    EXPECT_EQ(test::read_text(tracked), tracked_text);
+    EXPECT_NE(output.find("history     " + (out / "history.csv").string() + " (" +
+                          tracked.string() + " unchanged: --record appends to it)"),
+              std::string::npos);
   }
   {
     SCOPED_TRACE("200 ORB features instead of 1000 regress, and the report says where");
@@ -153,11 +168,16 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     worse.replace(worse.find("entries:"), 0, "settings: {orb: {num_features: 200}}\n");
     std::ofstream(dir / "worse.yaml") << worse;
     const fs::path out = dir / "worse";
-    EXPECT_EQ(
-        run_regress((dir / "worse.yaml").string() + " --out " + out.string() + " --baselines " +
-                        baselines + " --history " + (out / "history.csv").string(),
-                    &output),
-        1);
+    EXPECT_EQ(run_regress((dir / "worse.yaml").string() + " --out " + out.string() +
+                              " --baselines " + baselines + " --record",
+                          &output),
+              1);
+    // --record: the two new runs appended to the tracked history, and in the run's own.
+    const std::string recorded = test::read_text(tracked);
+    EXPECT_EQ(recorded.substr(0, tracked_text.size()), tracked_text);
+    EXPECT_EQ(lines(recorded), shipped_lines + 4);
+    EXPECT_EQ(lines(test::read_text(out / "history.csv")), 3);
+    tracked_text = recorded;
     EXPECT_NE(output.find("REGRESSED   jerk: ATE RMSE"), std::string::npos);
     const std::string report = test::read_text(out / "report.md");
     EXPECT_NE(report.find("**FAIL:"), std::string::npos);
@@ -175,10 +195,7 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     ASSERT_TRUE(fs::exists(out / "runs" / "desk" / "regress_entry.json"));
     EXPECT_FALSE(fs::exists(out / "runs" / "jerk" / "regress_entry.json"));
     EXPECT_FALSE(fs::exists(out / "report.md"));
-    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string() + " --history " +
-                              (out / "history.csv").string(),
-                          &output),
-              0);
+    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string(), &output), 0);
     EXPECT_NE(output.find("reuse       desk"), std::string::npos);
     EXPECT_NE(output.find("run         jerk"), std::string::npos);
     EXPECT_EQ(stable_report(out / "report.md"), stable_report(dir / "first" / "report.md"));
@@ -188,16 +205,39 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
     const fs::path out = dir / "killed";
     std::ofstream(out / "runs" / "jerk" / "run.json", std::ios::trunc)
         << "{\"status\": \"interrupted\", \"signal\": 15}\n";
-    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string() + " --history " +
-                              (out / "history.csv").string(),
-                          &output),
-              0);
+    EXPECT_EQ(run_regress(suite.string() + " --out " + out.string(), &output), 0);
     EXPECT_NE(output.find("reuse       desk"), std::string::npos);
     EXPECT_NE(output.find("run again   jerk: " + (out / "runs" / "jerk" / "run.json").string() +
                           ": the run is not complete (status 'interrupted')"),
               std::string::npos)
         << output;
     EXPECT_NE(output.find("run         jerk"), std::string::npos);
+    EXPECT_EQ(test::read_text(tracked), tracked_text);
+  }
+  {
+    SCOPED_TRACE("timing warns against a baseline from this machine, and only notes another's");
+    const fs::path copied = dir / "timing_baselines";
+    fs::copy(baselines, copied);
+    regress::Baseline fast = *regress::read_baseline(copied / "desk.json");
+    fast.metrics["frames_per_second"] = 1e6;  // far faster than any run here
+    regress::write_baseline(copied / "desk.json", fast);
+    const std::string args =
+        suite.string() + " --out " + (dir / "first").string() + " --baselines " + copied.string();
+    EXPECT_EQ(run_regress(args, &output), 0);
+    EXPECT_NE(output.find("warning     desk: frames/s"), std::string::npos);
+    EXPECT_EQ(output.find("timing not compared"), std::string::npos);
+
+    fast.provenance.machine = "Other CPU, 64 cores, Linux 1.0";
+    regress::write_baseline(copied / "desk.json", fast);
+    EXPECT_EQ(run_regress(args, &output), 0);
+    EXPECT_EQ(output.find("warning     desk"), std::string::npos);
+    EXPECT_NE(output.find("note        desk: timing not compared: the baseline was measured on "
+                          "Other CPU, 64 cores, Linux 1.0, this is " +
+                          regress::machine_description()),
+              std::string::npos);
+    EXPECT_EQ(output.find("note        jerk: timing not compared"), std::string::npos);
+    EXPECT_NE(test::read_text(dir / "first" / "report.md").find("| other machine |"),
+              std::string::npos);
   }
 }
 
@@ -220,8 +260,7 @@ TEST(RegressCliSuites, SyntheticPasses) {
   const fs::path out = test::temp_dir("regress_synthetic");
   std::string output;
   EXPECT_EQ(test::run_slamkit("regress " + std::string(SLAMKIT_SOURCE_DIR) +
-                                  "/results/synthetic.yaml --jobs 2 --out " + out.string() +
-                                  " --history " + (out / "history.csv").string(),
+                                  "/results/synthetic.yaml --jobs 2 --out " + out.string(),
                               &output),
             0)
       << output;
@@ -234,8 +273,7 @@ TEST(RegressCliSuites, TumPiecesPass) {
   std::string output;
   EXPECT_EQ(test::run_slamkit("regress " + std::string(SLAMKIT_SOURCE_DIR) +
                                   "/results/tum-pieces.yaml --data " + data.parent_path().string() +
-                                  " --out " + out.string() + " --history " +
-                                  (out / "history.csv").string(),
+                                  " --out " + out.string(),
                               &output),
             0)
       << output;
