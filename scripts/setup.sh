@@ -99,11 +99,12 @@ if ((${#missing[@]} > 0)); then
   echo "setup: installing ${#missing[@]} Debian packages and what they need: ${missing[*]}"
   echo "setup: this takes a few minutes on a fresh machine; log: $apt_log"
   "${sudo[@]}" apt-get update -qq
-  # apt's own count of what it will set up, for the progress line.
+  # apt's own count of the packages it will fetch, unpack and set up: three steps each.
   total="$(DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -s --no-install-recommends \
              "${missing[@]}" 2>/dev/null | grep -c '^Conf ' || true)"
   if ! DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends \
-         "${missing[@]}" 2>&1 | show_progress "packages" '^Setting up ' "$((total > 0 ? total : 1))" \
+         "${missing[@]}" 2>&1 |
+       show_progress "packages" '^Get:|^Unpacking |^Setting up ' "$((total > 0 ? 3 * total : 1))" \
          "$apt_log"; then
     tail -n 20 "$apt_log" >&2
     echo "setup: installing packages failed; full log in $apt_log" >&2

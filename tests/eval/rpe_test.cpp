@@ -149,7 +149,7 @@ TEST(RpeEvo, AllPairsInMetresTakeTheClosestPathDistanceWithinTheTolerance) {
             5u);
 }
 
-// Degree windows accumulate the angle between neighbouring poses (evo since PR #426): a camera
+// Degree windows accumulate the angle between neighbouring poses (evo since its pull request 426): a camera
 // turning 10 deg about z and back, six poses. Hand count with delta 19 deg: 10 + 10 >= 19 at
 // pose 2, again at pose 4, then only 10 -> pairs (0,2), (2,4). Absolute rotation vectors (the
 // old rule) would see no accumulated motion between 0 and 2.
