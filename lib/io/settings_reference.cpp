@@ -10,20 +10,6 @@
 namespace slamkit {
 namespace {
 
-// As the YAML writer prints it, so that the table shows what `slamkit settings` writes.
-template <class T>
-std::string value_text(const T& value) {
-  if constexpr (std::is_same_v<T, bool>) {
-    return value ? "true" : "false";
-  } else if constexpr (std::is_enum_v<T>) {
-    return name_of(enum_names(value), value);
-  } else if constexpr (std::is_floating_point_v<T>) {
-    return format_exact(value);
-  } else {
-    return std::to_string(value);
-  }
-}
-
 // The values of a field that takes no range: every value of its type.
 template <class T>
 std::string allowed_values(const T& value) {
@@ -54,11 +40,11 @@ class SectionTable {
 
   template <class T>
   void field(const char* name, T& value, const SettingNote& note) {
-    row(name, value_text(value), allowed_values(value), note);
+    row(name, setting_value_text(value), allowed_values(value), note);
   }
   template <class T>
   void field(const char* name, T& value, const Range& range, const SettingNote& note) {
-    row(name, value_text(value), range_text(range), note);
+    row(name, setting_value_text(value), range_text(range), note);
   }
 
   template <class S>

@@ -76,19 +76,6 @@ std::optional<T> other_value(T value, const Range& range) {
   return std::nullopt;
 }
 
-template <class T>
-std::string yaml_text(const T& value) {
-  if constexpr (std::is_same_v<T, bool>) {
-    return value ? "true" : "false";
-  } else if constexpr (std::is_enum_v<T>) {
-    return name_of(enum_names(value), value);
-  } else if constexpr (std::is_floating_point_v<T>) {
-    return format_exact(value);
-  } else {
-    return std::to_string(value);
-  }
-}
-
 // One field set to another valid value: the YAML document that sets it, and the line the
 // settings writer then prints for it.
 struct Probe {
@@ -114,7 +101,7 @@ class ValueChanger {
       static_assert(std::is_unsigned_v<T>);
       ++value;
     }
-    note(name, yaml_text(value));
+    note(name, setting_value_text(value));
   }
 
   template <class T>
@@ -125,7 +112,7 @@ class ValueChanger {
       return;
     }
     value = *other;
-    note(name, yaml_text(value));
+    note(name, setting_value_text(value));
   }
 
   template <class S>
