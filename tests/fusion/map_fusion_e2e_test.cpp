@@ -14,6 +14,7 @@
 #include "datasets/synth/map_quality.h"
 #include "datasets/synth/sequence_writer.h"
 #include "fusion/ply_cloud.h"
+#include "ply_reader.h"
 #include "support/test_data.h"
 #include "synth/shared_room.h"
 
@@ -21,6 +22,9 @@ namespace slamkit {
 namespace {
 
 namespace fs = std::filesystem;
+using test::file_bytes;
+using test::parse_ply;
+using test::PlyFile;
 
 // One short synthetic sequence per test process (rendering costs ~50 ms a frame a core).
 constexpr int kFrames = 24;
@@ -76,146 +80,6 @@ std::vector<Eigen::Isometry3d> poses_of(const std::vector<FusionFrame>& frames) 
   std::vector<Eigen::Isometry3d> poses;
   for (const FusionFrame& f : frames) poses.push_back(f.T_w_c);
   return poses;
-}
-
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// A second PLY reader, written from the format as Open3D (rply) and CloudCompare expect it:
-// "ply", a format line, elements with their properties, "end_header"; then the vertex rows.
-// It accepts exactly the layout the map promises (x y z float, red green blue uchar) and
-// other elements only when empty.
-struct PlyFile {
-  std::string format;
-  size_t vertices = 0;
-  size_t header_bytes = 0;
-  PlyCloud cloud;
-};
-
-PlyFile parse_ply(const fs::path& path) {
-  const std::string bytes = file_bytes(path);
-  PlyFile ply;
-  std::istringstream header(bytes);
-  std::string line;
-  std::getline(header, line);
-  EXPECT_EQ(line, "ply");
-  std::vector<std::string> properties;
-  std::string element;
-  while (std::getline(header, line) && line != "end_header") {
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "format") {
-      std::string version;
-      words >> ply.format >> version;
-      EXPECT_EQ(version, "1.0");
-    } else if (keyword == "element") {
-      size_t count = 0;
-      words >> element >> count;
-      if (element == "vertex")
-        ply.vertices = count;
-      else
-        EXPECT_EQ(count, 0u) << "unexpected non-empty element " << element;
-    } else if (keyword == "property") {
-      std::string type, name;
-      words >> type >> name;
-      if (element == "vertex") properties.push_back(type + " " + name);
-    } else {
-      EXPECT_TRUE(keyword == "comment" || keyword == "obj_info") << line;
-    }
-  }
-  EXPECT_EQ(line, "end_header");
-  ply.header_bytes = size_t(header.tellg());
-  EXPECT_EQ(properties, (std::vector<std::string>{"float x", "float y", "float z", "uchar red",
-                                                  "uchar green", "uchar blue"}));
-  if (ply.format == "binary_little_endian") {
-    constexpr size_t kRow = 3 * sizeof(float) + 3;
-    EXPECT_EQ(bytes.size(), ply.header_bytes + ply.vertices * kRow) << path;
-    for (size_t i = 0; i < ply.vertices && ply.header_bytes + (i + 1) * kRow <= bytes.size(); ++i) {
-      const char* row = bytes.data() + ply.header_bytes + i * kRow;
-      Eigen::Vector3f p;
-      std::memcpy(p.data(), row, 3 * sizeof(float));  // x86: little-endian already
-      ply.cloud.points.push_back(p);
-      ply.cloud.colours.push_back({uint8_t(row[12]), uint8_t(row[13]), uint8_t(row[14])});
-    }
-  } else {
-    EXPECT_EQ(ply.format, "ascii");
-    for (size_t i = 0; i < ply.vertices; ++i) {
-      Eigen::Vector3f p;
-      int r = -1, g = -1, b = -1;
-      header >> p.x() >> p.y() >> p.z() >> r >> g >> b;
-      ply.cloud.points.push_back(p);
-      ply.cloud.colours.push_back({uint8_t(r), uint8_t(g), uint8_t(b)});
-    }
-    EXPECT_TRUE(header) << "fewer vertex rows than the header says";
-    std::string rest;
-    header >> rest;
-    EXPECT_TRUE(rest.empty()) << "more rows than the header says";
-  }
-  return ply;
-}
-
-PlyCloud random_cloud(size_t n) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> coordinate(-4.0f, 4.0f);
-  std::uniform_int_distribution<int> channel(0, 255);
-  PlyCloud cloud;
-  for (size_t i = 0; i < n; ++i) {
-    cloud.points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    cloud.colours.push_back({uint8_t(channel(rng)), uint8_t(channel(rng)), uint8_t(channel(rng))});
-  }
-  return cloud;
-}
-
-TEST(PlyCloud, BinaryRoundTripIsExactAndAsciiKeepsSixDigits) {
-  const fs::path dir = test::temp_dir("ply_round_trip");
-  const PlyCloud cloud = random_cloud(1000);
-  write_ply_cloud(dir / "binary.ply", cloud, true);
-  write_ply_cloud(dir / "ascii.ply", cloud, false);
-  EXPECT_FALSE(fs::exists(temporary_path(dir / "binary.ply")));
-
-  for (const PlyCloud& back :
-       {read_ply_cloud(dir / "binary.ply"), parse_ply(dir / "binary.ply").cloud}) {
-    ASSERT_EQ(back.points.size(), cloud.points.size());
-    for (size_t i = 0; i < cloud.points.size(); ++i) {
-      EXPECT_EQ(back.points[i], cloud.points[i]) << i;
-      EXPECT_EQ(back.colours[i], cloud.colours[i]) << i;
-    }
-  }
-  for (const PlyCloud& back :
-       {read_ply_cloud(dir / "ascii.ply"), parse_ply(dir / "ascii.ply").cloud}) {
-    ASSERT_EQ(back.points.size(), cloud.points.size());
-    for (size_t i = 0; i < cloud.points.size(); ++i) {
-      // PCL prints 6 significant digits: |x| < 4 m keeps 5e-6 m.
-      EXPECT_LT((back.points[i] - cloud.points[i]).cwiseAbs().maxCoeff(), 5.1e-6f) << i;
-      EXPECT_EQ(back.colours[i], cloud.colours[i]) << i;
-    }
-  }
-  EXPECT_EQ(read_ply_points(dir / "binary.ply"), cloud.points);
-}
-
-TEST(PlyCloud, BadFilesAndCloudsAreInputErrorsNamingThePath) {
-  const fs::path dir = test::temp_dir("ply_bad");
-  const auto expect_error_naming = [](const fs::path& path, const auto& action) {
-    try {
-      action();
-      ADD_FAILURE() << "expected InputError for " << path;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
-    }
-  };
-  expect_error_naming(dir / "missing.ply", [&] { read_ply_cloud(dir / "missing.ply"); });
-  std::ofstream(dir / "text.ply") << "not a ply\n";
-  expect_error_naming(dir / "text.ply", [&] { read_ply_cloud(dir / "text.ply"); });
-  expect_error_naming(dir / "empty.ply", [&] { write_ply_cloud(dir / "empty.ply", {}); });
-  PlyCloud uneven = random_cloud(3);
-  uneven.colours.pop_back();
-  expect_error_naming(dir / "uneven.ply", [&] { write_ply_cloud(dir / "uneven.ply", uneven); });
-  std::ofstream(dir / "blocker") << "a file, not a folder";
-  const fs::path unwritable = dir / "blocker" / "map.ply";
-  expect_error_naming(unwritable, [&] { write_ply_cloud(unwritable, random_cloud(3)); });
 }
 
 TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
