@@ -100,7 +100,7 @@ TEST_P(FuzzReplay, EveryStoredFindingIsParsedOrRefusedCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay, ::testing::ValuesIn(fuzz_targets()),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& test_param) { return test_param.param.name; });
 
 }  // namespace
 }  // namespace slamkit::fuzz

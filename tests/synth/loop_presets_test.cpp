@@ -26,8 +26,9 @@ double mean_difference(const cv::Mat& a, const cv::Mat& b) {
 TEST(LoopPresets, LoopAndLongEndByRevisitingTheirStart) {
   for (const auto& [preset, frames] : {std::pair{Preset::kLoop, 600}, {Preset::kLong, 2000}}) {
     const std::vector<RevisitRange> revisits = true_revisits(make_trajectory(preset, frames, 1));
+    const int last = frames - 1;  // a structured binding cannot be captured in C++17 (clang)
     const auto last_to_first = std::find_if(revisits.begin(), revisits.end(), [&](auto& r) {
-      return r.later == frames - 1 && r.first == 0;
+      return r.later == last && r.first == 0;
     });
     EXPECT_NE(last_to_first, revisits.end()) << preset_name(preset);
   }
