@@ -20,7 +20,7 @@ namespace slamkit {
 template <class V>
 void visit_fields(OrbSettings& s, V& v) {
   v.field("num_features", s.num_features, {1, 100000},
-          from_slamkit("M, corners kept per frame over all levels"));
+          from_orb_slam2("M, corners kept per frame over all levels (its TUM settings' 1000)"));
   v.field("pyramid_levels", s.pyramid_levels, {1, 12}, from_paper("levels of the image pyramid"));
   v.field("scale_factor", s.scale_factor, above(1, 2),
           from_paper("level l is the image scaled by 1/scale_factor^l"));

@@ -11,7 +11,7 @@ enum class FastType {
 };
 
 struct OrbSettings {
-  int num_features = 1000;    // (slamkit) M, corners kept per frame over all levels
+  int num_features = 1000;    // (ORB-SLAM2) M, corners kept per frame over all levels
   int pyramid_levels = 4;     // (paper)
   double scale_factor = 1.2;  // (paper) level l is the image scaled by 1/scale_factor^l
   // (slamkit) FAST-9, not the paper's FAST-12: OpenCV has no FAST-12 on 16 pixels (ours
