@@ -62,7 +62,9 @@ TEST(LoopPresets, LookalikeVisitsTwoPlacesThatLookTheSameMetresApart) {
   const RenderedFrame b = render_frame(scene, camera, twin, sensor, 1, 0);
   const RenderedFrame moved =
       render_frame(scene, camera, shifted(place, Eigen::Vector3d(0.02, 0, 0)), sensor, 1, 0);
-  EXPECT_LT(mean_difference(a.bgr, b.bgr), 0.2);
+  // Not 0: the twin's pixels are rendered 3 m away in floating point (0.18 grey levels with
+  // gcc -O3, 0.23 with clang -O1).
+  EXPECT_LT(mean_difference(a.bgr, b.bgr), 0.5);
   EXPECT_LT(mean_difference(a.depth, b.depth), 1.0);  // units of 0.2 mm
   EXPECT_GT(mean_difference(a.bgr, moved.bgr), 5.0);
 }
