@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "bin/command.h"
-#include "eval/run/map_evaluation.h"
 #include "core/error.h"
 #include "eval/metrics_json.h"
+#include "eval/run/map_evaluation.h"
 
 namespace slamkit::cli {
 namespace {

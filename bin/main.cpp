@@ -27,8 +27,8 @@ int main(int argc, char** argv) {
   CLI::App app{"slamkit: offline RGB-D SLAM reconstruction and evaluation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("slamkit ") + slamkit::cli::kVersion + " (" +
-                                        slamkit::cli::kCommit + ", " +
-                                        slamkit::cli::kBuildType + " build)");
+                                        slamkit::cli::kCommit + ", " + slamkit::cli::kBuildType +
+                                        " build)");
   for (const auto& setup : slamkit::cli::registered_commands()) setup(app);
   try {
     app.parse(argc, argv);

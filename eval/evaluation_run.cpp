@@ -102,7 +102,7 @@ Inputs load_inputs(EvaluationRequest& a, const Rules& rules, bool need_pairs) {
   // "no pose pair" after a coverage warning.
   if (need_pairs || (in.pairs.empty() && in.coverage.overlap_s == 0))
     require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
-                               in.association);
+                         in.association);
   if (const auto text = coverage_warning(in.coverage)) warn(a, *text);
   return in;
 }
@@ -160,8 +160,7 @@ json common_json(const EvaluationRequest& a, const Inputs& in) {
             {"time_unit", to_string(in.reading.time_unit)},
             {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
-           {{"groundtruth", input_json(a.gt, in.gt)},
-            {"estimate", input_json(a.est, in.est)}}},
+           {{"groundtruth", input_json(a.gt, in.gt)}, {"estimate", input_json(a.est, in.est)}}},
           {"coverage", coverage_json(in.coverage)}};
 }
 

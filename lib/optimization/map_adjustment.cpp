@@ -108,10 +108,10 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
 }
 
 void MapBaJob::solve() {
-  report_ =
-      local_
-          ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.local_ba)
-          : global_bundle_adjustment(problem_, intrinsics_, settings_.residual, settings_.global_ba);
+  report_ = local_ ? local_bundle_adjustment(problem_, intrinsics_, settings_.residual,
+                                             settings_.local_ba)
+                   : global_bundle_adjustment(problem_, intrinsics_, settings_.residual,
+                                              settings_.global_ba);
 }
 
 MapAdjustment MapBaJob::apply(Map& map) const {

@@ -96,8 +96,8 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
         std::vector<Eigen::Isometry3d> since_keyframe(
             result.tracked_poses.begin() + long(last_keyframe_frame), result.tracked_poses.end());
         since_keyframe.push_back(record.T_w_c);
-        const double motion =
-            quasi_static_motion(since_keyframe, settings.optimization.local_ba.motion_rotation_weight);
+        const double motion = quasi_static_motion(
+            since_keyframe, settings.optimization.local_ba.motion_rotation_weight);
         record.reference_keyframe =
             mapper.insert_keyframe(tracker.keyframe_from(frame, record), motion);
         release_culled_samples();

@@ -27,9 +27,8 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
   std::filesystem::create_directories(out);
   RunResult result = track_sequence(sequence, settings, progress);
   StageTimes& t = result.seconds;
-  t.loops = seconds_of([&] {
-    result.loop_pass = close_loops(result.map, camera, settings, vocabulary);
-  });
+  t.loops =
+      seconds_of([&] { result.loop_pass = close_loops(result.map, camera, settings, vocabulary); });
   t.global_ba = seconds_of([&] {
     if (const std::optional<MapAdjustment> adjustment =
             adjust_globally(result.map, camera, settings)) {

@@ -1,10 +1,11 @@
 #pragma once
 // Test helpers for PLY files: a second PLY reader, independent of PCL's, and random clouds.
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <gtest/gtest.h>
 #include <iterator>
 #include <random>
 #include <sstream>
