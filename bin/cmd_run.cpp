@@ -7,6 +7,7 @@
 
 #include "bin/command.h"
 #include "bin/output_folder.h"
+#include "bin/report_writing.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
 #include "eval/ate.h"
@@ -31,6 +32,7 @@ struct RunArgs {
   bool loops = true;
   std::string vocabulary_file;
   bool allow_out_in_sequence = false;
+  bool report = true;
   SequenceOptions sequence;
 };
 
@@ -91,6 +93,7 @@ void run(const RunArgs& args) {
   if (!args.evaluate) settings.pipeline.evaluate = false;
   if (args.ascii) settings.map.binary_ply = false;
   if (!args.loops) settings.loop.enabled = false;
+  if (!args.report) settings.report.enabled = false;
   std::optional<Vocabulary> vocabulary;
   if (!args.vocabulary_file.empty()) vocabulary = load_vocabulary(args.vocabulary_file);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
@@ -114,6 +117,10 @@ void run(const RunArgs& args) {
       std::printf("map         %s\n", (std::filesystem::path(args.out) / "map.ply").c_str());
     return result.seconds;
   });
+  // A view of the finished folder, written after run.json says it is complete.
+  if (settings.report.enabled)
+    write_report_page({args.out}, std::filesystem::path(args.out) / "report.html",
+                      size_t(settings.report.point_budget));
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {
@@ -132,6 +139,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
   cmd->add_flag("!--no-loops", args->loops, "Skip the loop pass (place recognition, pose graph)");
+  cmd->add_flag("!--no-report", args->report, "Do not write report.html (the run's page)");
   cmd->add_option("--vocabulary", args->vocabulary_file,
                   "Vocabulary file (slamkit vocab train, or ORB-SLAM2's ORBvoc.txt); default: "
                   "one trained on the run's keyframes");

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/text_table.h"
 
 namespace slamkit::eval {
@@ -19,9 +21,12 @@ size_t column(const std::filesystem::path& path, const TableRow& header, const s
   return size_t(it - header.fields.begin());
 }
 
+double angle_deg(const Eigen::Isometry3d& d) {
+  return Eigen::AngleAxisd(d.rotation()).angle() * 180.0 / M_PI;
+}
+
 bool within(const Eigen::Isometry3d& d, double max_m, double max_deg) {
-  return d.translation().norm() <= max_m &&
-         Eigen::AngleAxisd(d.rotation()).angle() <= max_deg * M_PI / 180.0;
+  return d.translation().norm() <= max_m && angle_deg(d) <= max_deg;
 }
 
 }  // namespace
@@ -72,6 +77,15 @@ std::vector<RevisitEpisode> read_revisit_episodes(const std::filesystem::path& r
   return episodes;
 }
 
+const char* to_string(LoopVerdict verdict) {
+  switch (verdict) {
+    case LoopVerdict::kTrue: return "true";
+    case LoopVerdict::kFalse: return "false";
+    case LoopVerdict::kUnjudged: return "unjudged";
+  }
+  return "unjudged";
+}
+
 std::optional<double> LoopAccuracy::precision() const {
   const int judged = accepted - unjudged;
   if (judged == 0) return accepted == 0 ? std::optional<double>(1.0) : std::nullopt;
@@ -90,6 +104,7 @@ LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajector
   result.accepted = int(loops.size());
   std::vector<double> true_stamps;
   for (const AcceptedLoop& loop : loops) {
+    JudgedLoop& judged = result.loops.emplace_back(JudgedLoop{loop.stamp, loop.loop_stamp});
     const auto a = groundtruth.nearest(loop.stamp, kMaxStampDifference);
     const auto b = groundtruth.nearest(loop.loop_stamp, kMaxStampDifference);
     if (!a || !b) {
@@ -98,7 +113,12 @@ LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajector
     }
     const Eigen::Isometry3d truth = groundtruth.pose(*a).inverse() * groundtruth.pose(*b);
     result.same_place += within(truth, criteria.max_distance_m, criteria.max_angle_deg);
-    if (within(truth.inverse() * loop.measured, criteria.max_error_m, criteria.max_error_deg)) {
+    const Eigen::Isometry3d error = truth.inverse() * loop.measured;
+    judged.error_m = error.translation().norm();
+    judged.error_deg = angle_deg(error);
+    judged.verdict = LoopVerdict::kFalse;
+    if (within(error, criteria.max_error_m, criteria.max_error_deg)) {
+      judged.verdict = LoopVerdict::kTrue;
       ++result.true_loops;
       true_stamps.push_back(loop.stamp);
     }
@@ -111,6 +131,18 @@ LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajector
       });
   }
   return result;
+}
+
+void write_loop_check_csv(const std::filesystem::path& path, const LoopAccuracy& accuracy) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "keyframe_stamp,loop_stamp,verdict,error_m,error_deg\n";
+    char line[160];
+    for (const JudgedLoop& loop : accuracy.loops) {
+      std::snprintf(line, sizeof line, "%.6f,%.6f,%s,%.6f,%.4f\n", loop.stamp, loop.loop_stamp,
+                    to_string(loop.verdict), loop.error_m, loop.error_deg);
+      out << line;
+    }
+  });
 }
 
 }  // namespace slamkit::eval

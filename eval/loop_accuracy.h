@@ -40,7 +40,17 @@ struct LoopCriteria {
   double max_angle_deg = 30.0;
 };
 
+// One accepted loop judged: how far its measured relative pose is from the groundtruth's.
+enum class LoopVerdict { kTrue, kFalse, kUnjudged };
+struct JudgedLoop {
+  double stamp = 0, loop_stamp = 0;
+  LoopVerdict verdict = LoopVerdict::kUnjudged;
+  double error_m = 0, error_deg = 0;  // of the measured pose; 0 when unjudged
+};
+const char* to_string(LoopVerdict verdict);
+
 struct LoopAccuracy {
+  std::vector<JudgedLoop> loops;  // in the order of loops.csv
   int accepted = 0;
   int true_loops = 0;
   int same_place = 0;           // keyframes within max_distance_m and max_angle_deg of each other
@@ -57,5 +67,9 @@ struct LoopAccuracy {
 LoopAccuracy judge_loops(const std::vector<AcceptedLoop>& loops, const Trajectory& groundtruth,
                          const std::optional<std::vector<RevisitEpisode>>& episodes,
                          const LoopCriteria& criteria = {});
+
+// loop_check.csv: one row per accepted loop (keyframe_stamp,loop_stamp,verdict,error_m,
+// error_deg), for readers that have no groundtruth at hand (`slamkit report`).
+void write_loop_check_csv(const std::filesystem::path& path, const LoopAccuracy& accuracy);
 
 }  // namespace slamkit::eval

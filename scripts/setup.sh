@@ -6,6 +6,8 @@
 #   --werror                    # warnings are errors on the project's own code (CI)
 #   --test-tools                # also clang 14, libFuzzer and OpenMP for clang, for scripts/fuzz.sh and the
 #                               # sanitizer build (scripts/test.sh asks for them under CI)
+#   --browser                   # also Chromium, for the browser test of the report page
+#                               # (tests/report; asked for by scripts/test.sh)
 #   --with-slurm                # also Slurm, slurmdbd, munge and MariaDB's server binary, for
 #                               # the loopback Slurm test (scripts/slurm_loopback.sh; asked
 #                               # for by scripts/test.sh under CI)
@@ -14,6 +16,7 @@
 set -euo pipefail
 
 test_tools=false
+browser=false
 with_slurm=false
 build=true
 targets=(--target slamkit)
@@ -23,10 +26,11 @@ for arg in "$@"; do
     --all) targets=() ;;
     --werror) werror=ON ;;
     --test-tools) test_tools=true ;;
+    --browser) browser=true ;;
     --with-slurm) with_slurm=true ;;
     --packages-only) build=false ;;
     *)
-      echo "setup: unknown option '$arg' (--all, --werror, --test-tools, --with-slurm," \
+      echo "setup: unknown option '$arg' (--all, --werror, --test-tools, --browser, --with-slurm," \
         "--packages-only)" >&2
       exit 2
       ;;
@@ -36,16 +40,20 @@ done
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 
-# Build tools, the libraries of the stack, the test framework, and matplotlib for the plots.
+# Build tools, the libraries of the stack, the test framework, matplotlib for the plots, and
+# three.js, which the build inlines into the report page.
 packages=(
   g++ cmake make pkg-config
   libeigen3-dev libopencv-dev libceres-dev libpcl-dev libyaml-cpp-dev libpng-dev zlib1g-dev
   liblodepng-dev libisal-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev
-  python3-matplotlib
+  python3-matplotlib libjs-three
 )
 if $test_tools; then
   packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev)
+fi
+if $browser; then
+  packages+=(chromium)
 fi
 if $with_slurm; then
   # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)

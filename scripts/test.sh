@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up (scripts/setup.sh --all: every test suite and benchmark) and runs the whole test suite
+# Sets up (scripts/setup.sh --all --browser: every test suite and benchmark, and Chromium for the
+# report page's browser test) and runs the whole test suite
 # with ctest: both tiers, `unit` and `e2e` (docs/usage.md#tests). Extra arguments go to ctest,
 # e.g. `scripts/test.sh -L unit`.
 # Real-data tests read SLAMKIT_DATA (a folder with the TUM sequences and trajectories); without
@@ -15,9 +16,9 @@ build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 ci=false
 [[ "${CI:-}" == "true" ]] && ci=true
 if $ci; then
-  "$root/scripts/setup.sh" --all --werror --test-tools --with-slurm
+  "$root/scripts/setup.sh" --all --browser --werror --test-tools --with-slurm
 else
-  "$root/scripts/setup.sh" --all
+  "$root/scripts/setup.sh" --all --browser
 fi
 if [[ -z "${SLAMKIT_DATA:-}" ]]; then
   echo "test: SLAMKIT_DATA is not set: tests on real TUM data will be skipped"

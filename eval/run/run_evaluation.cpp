@@ -57,6 +57,7 @@ void evaluate_run_loops(const TumSequence& seq, const std::filesystem::path& out
   }
   std::printf("\n");
   merge_into_metrics_file(out / "metrics.json", update);
+  write_loop_check_csv(out / "loop_check.csv", a);
 }
 
 void evaluate_run_map(const TumSequence& seq, double max_depth, const std::filesystem::path& out) {

@@ -14,7 +14,8 @@ namespace slamkit::eval {
 void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out, bool plot);
 
 // The loops of RUN/loops.csv judged against the groundtruth (and revisits.txt when the
-// sequence has one): printed, and added to RUN/metrics.json.
+// sequence has one): printed, added to RUN/metrics.json, and each loop's verdict written to
+// RUN/loop_check.csv.
 void evaluate_run_loops(const TumSequence& sequence, const std::filesystem::path& out);
 
 // On a synthetic sequence, RUN/map.ply's accuracy and completeness (surfaces within

@@ -376,6 +376,13 @@ void visit_fields(PipelineSettings& s, V& v) {
 }
 
 template <class V>
+void visit_fields(ReportSettings& s, V& v) {
+  v.field("enabled", s.enabled, from_slamkit("`run` writes report.html (`--no-report` skips it)"));
+  v.field("point_budget", s.point_budget, {0, 50'000'000},
+          from_slamkit("map points in the page at most, an even subset of map.ply"));
+}
+
+template <class V>
 void visit_fields(Settings& s, V& v) {
   v.section("orb", s.orb, "ORB extraction");
   v.section("matcher", s.matcher, "descriptor matching");
@@ -388,6 +395,7 @@ void visit_fields(Settings& s, V& v) {
   v.section("vocabulary", s.vocabulary,
             "the bag-of-words vocabulary: training of the k-ary tree, its direct index");
   v.section("pipeline", s.pipeline, "the batch engine");
+  v.section("report", s.report, "the report page of a run (report.html)");
 }
 
 // Names of enum values in settings files.

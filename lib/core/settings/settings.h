@@ -10,6 +10,7 @@
 #include "core/settings/optimization_settings.h"
 #include "core/settings/orb_settings.h"
 #include "core/settings/pipeline_settings.h"
+#include "core/settings/report_settings.h"
 #include "core/settings/tracking_settings.h"
 #include "core/settings/vocabulary_settings.h"
 
@@ -26,6 +27,7 @@ struct Settings {
   FusionSettings map;
   VocabularySettings vocabulary;
   PipelineSettings pipeline;
+  ReportSettings report;
 };
 
 }  // namespace slamkit

@@ -1,0 +1,13 @@
+#pragma once
+// Writes a report page and prints what it holds (`slamkit report`, and `run` at its end).
+#include <filesystem>
+#include <vector>
+
+namespace slamkit::cli {
+
+// Prints the notes of what the runs lack on stderr ("report: desk: no map.ply: ..."), then one
+// line: the page, its size, the map points shown and the seconds it took.
+void write_report_page(const std::vector<std::filesystem::path>& runs,
+                       const std::filesystem::path& out, size_t point_budget);
+
+}  // namespace slamkit::cli

@@ -1,0 +1,29 @@
+#pragma once
+// The data a report page draws, as one JSON object embedded in the page: per run its metrics,
+// settings and stage times (as the run folder holds them), and its geometry as base64 arrays in
+// one frame, the groundtruth's when the run was evaluated (so that several runs of a sequence
+// overlay), else the estimate's own. The map is an evenly strided subset of at most the point
+// budget, its positions quantised to 16 bits over its bounding box (0.1 mm in a 6 m room).
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "eval/report/run_folder.h"
+#include "fusion/ply_cloud.h"
+
+namespace slamkit::eval {
+
+// The indices of at most `budget` of `total` points, evenly spread over the file's order: the
+// fused map is written voxel by voxel, so a stride keeps the whole map at a lower density. The
+// same map gives the same subset.
+std::vector<size_t> strided_subset(size_t total, size_t budget);
+
+struct ReportOptions {
+  size_t point_budget = 300'000;  // map points in the page, shared out among the runs' maps
+  std::string generator;          // "slamkit VERSION", shown in the footer
+};
+
+// `maps[i]` is runs[i]'s map.ply read whole (empty when it has none).
+nlohmann::json report_data(const std::vector<RunFolder>& runs, const std::vector<PlyCloud>& maps,
+                           const ReportOptions& options);
+
+}  // namespace slamkit::eval
