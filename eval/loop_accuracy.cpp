@@ -79,9 +79,12 @@ std::vector<RevisitEpisode> read_revisit_episodes(const std::filesystem::path& r
 
 const char* to_string(LoopVerdict verdict) {
   switch (verdict) {
-    case LoopVerdict::kTrue: return "true";
-    case LoopVerdict::kFalse: return "false";
-    case LoopVerdict::kUnjudged: return "unjudged";
+    case LoopVerdict::kTrue:
+      return "true";
+    case LoopVerdict::kFalse:
+      return "false";
+    case LoopVerdict::kUnjudged:
+      return "unjudged";
   }
   return "unjudged";
 }

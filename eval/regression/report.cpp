@@ -84,6 +84,14 @@ std::string headline(const SuiteReport& r) {
   return text;
 }
 
+// `page` relative to the folder of the report that links it (so the suite's folder can move).
+std::string page_link(const fs::path& report, const fs::path& page) {
+  return fs::absolute(page)
+      .lexically_normal()
+      .lexically_relative(fs::absolute(report).lexically_normal().parent_path())
+      .generic_string();
+}
+
 }  // namespace
 
 bool EntryResult::failed() const {
@@ -141,6 +149,8 @@ void write_report_markdown(const fs::path& file, const SuiteReport& r) {
           << (is_failure(c.verdict) ? "**" : "") << " |\n";
     }
     if (e.entry->reference) out << "\nPublished: " << reference_text(e) << ".\n";
+    if (fs::exists(e.run.dir / "report.html"))
+      out << "\n[The run's page](" << page_link(file, e.run.dir / "report.html") << ")\n";
     for (const char* plot : {"ate_over_time.png", "trajectory_xy.png"})
       if (fs::exists(e.run.dir / plot))
         out << "\n![" << plot << "](runs/" << e.entry->name << "/" << plot << ")\n";
@@ -190,6 +200,9 @@ void write_report_html(const fs::path& file, const SuiteReport& r) {
       continue;
     }
     out << "<p class=\"meta\">" << escape_xml(baseline_origin(e)) << "</p>\n";
+    if (fs::exists(e.run.dir / "report.html"))  // the run's own page: map, trajectory, loops
+      out << "<p><a href=\"" << escape_xml(page_link(file, e.run.dir / "report.html"))
+          << "\">The run's page</a>: its map in 3D, trajectory by error, loops, diagnostics.</p>\n";
     out << "<table><tr><th>metric</th><th>value</th><th>baseline</th><th>delta</th>"
         << "<th>tolerance</th><th>verdict</th></tr>\n";
     for (const MetricComparison& c : e.comparisons) {

@@ -34,7 +34,7 @@ json trajectory_json(const RunFolder& run, double t0) {
     while (e + 1 < stamps.size() && stamps[e] < est.stamp(i) - 1e-6) ++e;
     // A pose errors.csv does not hold (not associated with groundtruth) has no error: NaN.
     ate.push_back(std::abs(stamps[e] - est.stamp(i)) < 1e-6 ? float(run.errors->ate_m[e])
-                                                             : std::nanf(""));
+                                                            : std::nanf(""));
   }
   json j = {{"count", est.size()},
             {"seconds", base64_of(seconds)},
@@ -95,7 +95,8 @@ json map_json(const RunFolder& run, const PlyCloud& cloud, size_t budget) {
   const std::vector<size_t> kept = strided_subset(cloud.points.size(), budget);
   std::vector<Eigen::Vector3f> points;
   points.reserve(kept.size());
-  for (size_t i : kept) points.push_back((run.to_groundtruth * cloud.points[i].cast<double>()).cast<float>());
+  for (size_t i : kept)
+    points.push_back((run.to_groundtruth * cloud.points[i].cast<double>()).cast<float>());
   Eigen::Vector3f low = Eigen::Vector3f::Constant(0), high = low;
   if (!points.empty()) {
     low = high = points.front();
@@ -114,12 +115,9 @@ json map_json(const RunFolder& run, const PlyCloud& cloud, size_t budget) {
       quantised.push_back(uint16_t(std::lround((points[k][d] - low[d]) / size[d] * 65535.0f)));
     for (uint8_t c : cloud.colours[kept[k]]) colours.push_back(c);
   }
-  return {{"total", cloud.points.size()},
-          {"count", kept.size()},
-          {"min", {low.x(), low.y(), low.z()}},
-          {"size", {size.x(), size.y(), size.z()}},
-          {"positions", base64_of(quantised)},
-          {"colours", base64_of(colours)}};
+  return {{"total", cloud.points.size()},       {"count", kept.size()},
+          {"min", {low.x(), low.y(), low.z()}}, {"size", {size.x(), size.y(), size.z()}},
+          {"positions", base64_of(quantised)},  {"colours", base64_of(colours)}};
 }
 
 // tracking.csv's columns as float32 arrays, with the frame times in seconds from the start.

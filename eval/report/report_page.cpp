@@ -1,25 +1,12 @@
 #include "eval/report/report_page.h"
 
 #include "core/error.h"
+#include "eval/regression/report_format.h"
 #include "eval/report/report_assets.h"
 #include "io/atomic_file.h"
 
 namespace slamkit::eval {
 namespace {
-
-std::string escape_html(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Text inside <script> ends at the first "</script": every "</" becomes "<\/", which means the
 // same in JavaScript strings and in JSON.
@@ -56,7 +43,7 @@ std::string fill_template(std::string_view page,
 
 std::string render_report_page(const nlohmann::json& data, const std::string& title) {
   return fill_template(report_assets::page_html,
-                       {{"title", escape_html(title)},
+                       {{"title", regress::escape_xml(title)},
                         {"style", std::string(report_assets::page_css)},
                         {"three", inside_script(report_assets::three_js)},
                         {"orbit_controls", inside_script(report_assets::orbit_controls_js)},

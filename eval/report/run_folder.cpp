@@ -202,8 +202,9 @@ RunFolder read_run_folder(const fs::path& dir) {
     run.metrics = read_metrics_file(dir / "metrics.json");
     if (const auto alignment = read_alignment(run.metrics)) run.to_groundtruth = *alignment;
   } else {
-    note_missing("metrics.json", "no groundtruth evaluation (a sequence without groundtruth, or "
-                                 "--no-eval)");
+    note_missing("metrics.json",
+                 "no groundtruth evaluation (a sequence without groundtruth, or "
+                 "--no-eval)");
   }
   if (is_file(dir / "timing.json")) run.timing = read_json_object(dir / "timing.json");
   if (is_file(dir / "settings.yaml")) run.settings_yaml = read_whole(dir / "settings.yaml");

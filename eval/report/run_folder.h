@@ -34,23 +34,23 @@ using FrameColumns = std::map<std::string, std::vector<double>>;
 
 struct RunFolder {
   std::filesystem::path dir;
-  std::string name;             // the folder's name
-  std::string status;           // run.json's status; "no run.json" without one
-  nlohmann::json run;           // run.json, null without one
-  nlohmann::json metrics;       // metrics.json, null without groundtruth
-  nlohmann::json timing;        // timing.json
-  std::string settings_yaml;    // settings.yaml's text
+  std::string name;           // the folder's name
+  std::string status;         // run.json's status; "no run.json" without one
+  nlohmann::json run;         // run.json, null without one
+  nlohmann::json metrics;     // metrics.json, null without groundtruth
+  nlohmann::json timing;      // timing.json
+  std::string settings_yaml;  // settings.yaml's text
   std::optional<Trajectory> trajectory, keyframes;
   std::optional<PoseErrors> errors;
   // The estimate's frame into the groundtruth's (metrics.json's ATE alignment: x -> sRx + t);
   // identity without groundtruth, so the page draws in the estimate's own frame.
   Eigen::Affine3d to_groundtruth = Eigen::Affine3d::Identity();
   std::vector<LoopEdge> loops;
-  FrameColumns frames;                               // tracking.csv
-  std::vector<double> lost_stamps;                   // frames tracking.csv marks lost
-  std::map<std::string, std::string> figures;        // the evaluator's SVG plots, by file stem
-  std::optional<std::filesystem::path> map;          // map.ply when it exists
-  std::vector<std::string> notes;                    // what is missing or incomplete, and why
+  FrameColumns frames;                         // tracking.csv
+  std::vector<double> lost_stamps;             // frames tracking.csv marks lost
+  std::map<std::string, std::string> figures;  // the evaluator's SVG plots, by file stem
+  std::optional<std::filesystem::path> map;    // map.ply when it exists
+  std::vector<std::string> notes;              // what is missing or incomplete, and why
 };
 
 // Reads `dir`. Throws InputError when it is not a folder, when it holds neither run.json nor

@@ -153,6 +153,9 @@ TEST(RegressCli, TinySuiteBaselinesPassWorseSettingRegressesKilledRunResumes) {
       ++images;
     EXPECT_GE(images, 5u);  // error over time and trajectory per entry, the box plot, history
     EXPECT_EQ(html.find("http"), std::string::npos);
+    // Each entry's own page, linked relative to the report.
+    EXPECT_NE(html.find("<a href=\"runs/desk/report.html\">"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "runs" / "desk" / "report.html"));
     // The run's history beside the report: a line per run, not per invocation.
     const std::string history = test::read_text(out / "history.csv");
     EXPECT_EQ(lines(history), 3);

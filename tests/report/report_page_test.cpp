@@ -1,5 +1,7 @@
 // The report page's data: what it embeds from a run folder, in which frame, within the point
 // budget; what it says when files are missing; what it refuses.
+#include "eval/report/report_page.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "core/error.h"
 #include "eval/report/base64.h"
-#include "eval/report/report_page.h"
 #include "io/trajectory_io.h"
 #include "support/test_data.h"
 
@@ -35,13 +36,15 @@ fs::path make_run_folder(const std::string& tag, int frames = 20) {
     const bool lost = i == 5;
     if (!lost) trajectory.push_back(stamp, pose);
     if (i % 5 == 0) keyframes.push_back(stamp, pose);
-    tracking += std::to_string(i) + "," + std::to_string(stamp) + ",svd_ransac,1000,600,500,450,1," +
-                (lost ? "1,too few inliers," : "0,,") + (i % 5 == 0 ? "1" : "0") + ",0.5,0,3.5,9\n";
+    tracking += std::to_string(i) + "," + std::to_string(stamp) +
+                ",svd_ransac,1000,600,500,450,1," + (lost ? "1,too few inliers," : "0,,") +
+                (i % 5 == 0 ? "1" : "0") + ",0.5,0,3.5,9\n";
   }
   write_tum_trajectory(dir / "trajectory.txt", trajectory);
   write_tum_trajectory(dir / "keyframes.txt", keyframes);
   write_text(dir / "tracking.csv", tracking);
-  write_text(dir / "run.json", R"({"status": "complete", "version": "test", "seconds": {"total": 2.5}})");
+  write_text(dir / "run.json",
+             R"({"status": "complete", "version": "test", "seconds": {"total": 2.5}})");
   write_text(dir / "settings.yaml", "orb:\n  num_features: 1000\n");
   return dir;
 }
@@ -58,17 +61,8 @@ json embedded_data(const fs::path& page) {
 }
 
 std::vector<uint8_t> decode_base64(const std::string& text) {
-  const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::vector<uint8_t> bytes;
-  uint32_t bits = 0;
-  int count = 0;
-  for (char c : text) {
-    if (c == '=') break;
-    bits = bits << 6 | uint32_t(alphabet.find(c));
-    if ((count += 6) >= 8) bytes.push_back(uint8_t(bits >> (count -= 8)));
-  }
-  return bytes;
+  const std::string bytes = test::base64_decode(text);
+  return std::vector<uint8_t>(bytes.begin(), bytes.end());
 }
 
 template <class T>
@@ -80,9 +74,13 @@ std::vector<T> decode_array(const std::string& text) {
 }
 
 TEST(ReportPage, Base64MatchesTheRfc4648Vectors) {
-  const std::pair<const char*, const char*> vectors[] = {
-      {"", ""},         {"f", "Zg=="},        {"fo", "Zm8="},        {"foo", "Zm9v"},
-      {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="}, {"foobar", "Zm9vYmFy"}};
+  const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                         {"f", "Zg=="},
+                                                         {"fo", "Zm8="},
+                                                         {"foo", "Zm9v"},
+                                                         {"foob", "Zm9vYg=="},
+                                                         {"fooba", "Zm9vYmE="},
+                                                         {"foobar", "Zm9vYmFy"}};
   for (const auto& [plain, encoded] : vectors)
     EXPECT_EQ(base64_encode(plain, std::strlen(plain)), encoded) << plain;
 }
@@ -136,8 +134,9 @@ TEST(ReportPage, ARunWithoutMapOrGroundtruthGetsTheTrajectoryAndDiagnosticsAndSa
   const fs::path dir = make_run_folder("report_plain");
   const ReportSummary summary = write_report({dir}, dir / "report.html", ReportOptions{});
   const auto says = [&](const std::string& text) {
-    return std::any_of(summary.notes.begin(), summary.notes.end(),
-                       [&](const std::string& note) { return note.find(text) != std::string::npos; });
+    return std::any_of(summary.notes.begin(), summary.notes.end(), [&](const std::string& note) {
+      return note.find(text) != std::string::npos;
+    });
   };
   EXPECT_TRUE(says("no map.ply"));
   EXPECT_TRUE(says("no metrics.json"));
@@ -154,7 +153,7 @@ TEST(ReportPage, ARunWithoutMapOrGroundtruthGetsTheTrajectoryAndDiagnosticsAndSa
   ASSERT_EQ(features.size(), 20u);
   EXPECT_EQ(features[3], 1000);
   const std::vector<float> seconds = decode_array<float>(run["frames"]["seconds"]);
-  EXPECT_NEAR(seconds[19], 1.9, 1e-5);  // from the first frame
+  EXPECT_NEAR(seconds[19], 1.9, 1e-5);             // from the first frame
   EXPECT_FALSE(run["frames"].contains("solver"));  // words, not a numeric series
 }
 

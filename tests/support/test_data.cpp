@@ -73,4 +73,24 @@ SlamkitResult run_slamkit_apart(const std::string& arguments) {
   return result;
 }
 
+std::string base64_decode(const std::string& text) {
+  static const std::string alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string bytes;
+  bytes.reserve(text.size() / 4 * 3);
+  unsigned bits = 0;
+  int bit_count = 0;
+  for (const char c : text) {
+    const size_t value = alphabet.find(c);
+    if (value == std::string::npos) continue;  // '=' padding
+    bits = (bits << 6) | static_cast<unsigned>(value);
+    bit_count += 6;
+    if (bit_count >= 8) {
+      bit_count -= 8;
+      bytes += static_cast<char>((bits >> bit_count) & 0xFF);
+    }
+  }
+  return bytes;
+}
+
 }  // namespace slamkit::test

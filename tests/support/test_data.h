@@ -18,6 +18,10 @@ bool running_under_ci();
 // The whole text of a file ("" when it cannot be read).
 std::string read_text(const std::filesystem::path& file);
 
+// The bytes of base64 text (RFC 4648; padding and other characters skipped): screenshots from
+// the browser, arrays embedded in report pages.
+std::string base64_decode(const std::string& text);
+
 // A fresh empty folder under the system temp dir, unique per test.
 std::filesystem::path temp_dir(const std::string& tag);
 
@@ -36,12 +40,12 @@ SlamkitResult run_slamkit_apart(const std::string& arguments);
 }  // namespace slamkit::test
 
 // Declares `var` as the real-data path, or fails (CI) / skips (elsewhere) the test.
-#define SLAMKIT_REQUIRE_DATA(var, relative)                                                  \
-  const auto var##_found = ::slamkit::test::real_data(relative);                             \
-  if (!var##_found) {                                                                       \
-    const std::string why = std::string("real data '") + (relative) +                        \
-                            "' not found: set SLAMKIT_DATA to the datasets folder";          \
-    if (::slamkit::test::running_under_ci()) FAIL() << why;                                  \
-    GTEST_SKIP() << why;                                                                     \
-  }                                                                                          \
+#define SLAMKIT_REQUIRE_DATA(var, relative)                                         \
+  const auto var##_found = ::slamkit::test::real_data(relative);                    \
+  if (!var##_found) {                                                               \
+    const std::string why = std::string("real data '") + (relative) +               \
+                            "' not found: set SLAMKIT_DATA to the datasets folder"; \
+    if (::slamkit::test::running_under_ci()) FAIL() << why;                         \
+    GTEST_SKIP() << why;                                                            \
+  }                                                                                 \
   const std::filesystem::path var = *var##_found

@@ -61,7 +61,10 @@ for (const run of runs) {
 // ---- the 3D view --------------------------------------------------------------------------------
 
 const canvas = document.getElementById('view3d');
-const renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
+// No multisampling, and every line and point drawn with vertex colours: a software WebGL (a
+// headless browser, a machine without a GPU) spends most of the first frame compiling shader
+// programs, and these choices leave two.
+const renderer = new THREE.WebGLRenderer({ canvas, antialias: false });
 renderer.setPixelRatio(window.devicePixelRatio || 1);
 renderer.setClearColor(0x15181e);
 const scene = new THREE.Scene();
@@ -78,16 +81,24 @@ for (const run of runs) {
   }
 }
 
+// Positions with a colour per vertex: `colours` an array, or one colour for every vertex.
 function lineGeometry(positions, colours) {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-  if (colours) geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+  if (!(colours instanceof Float32Array)) {
+    const c = new THREE.Color(colours);
+    const each = new Float32Array(positions.length);
+    for (let i = 0; i < each.length; i += 3) each.set([c.r, c.g, c.b], i);
+    colours = each;
+  }
+  geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
   return geometry;
 }
+const lineMaterial = new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors });
 
 const pointMaterials = [];
 function pointsMaterial(options) {
-  const material = new THREE.PointsMaterial(Object.assign({ sizeAttenuation: false }, options));
+  const material = new THREE.PointsMaterial(Object.assign({ sizeAttenuation: false, vertexColors: THREE.VertexColors }, options));
   material.baseSize = options.size;
   pointMaterials.push(material);
   return material;
@@ -104,7 +115,7 @@ function mapLayer(map) {
   const positions = new Uint16Array(bytesOf(map.positions));
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3, true));
   geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(bytesOf(map.colours)), 3, true));
-  const points = new THREE.Points(geometry, pointsMaterial({ size: 2, vertexColors: THREE.VertexColors }));
+  const points = new THREE.Points(geometry, pointsMaterial({ size: 2 }));
   // Positions are quantised over the map's box: scale and offset put them back in metres.
   points.scale.set(map.size[0], map.size[1], map.size[2]);
   points.position.set(map.min[0], map.min[1], map.min[2]);
@@ -126,8 +137,8 @@ function trajectoryLayer(trajectory, runColour) {
   const geometry = lineGeometry(positions, colours);
   geometry.computeBoundingBox();
   bounds.union(geometry.boundingBox);
-  group.add(new THREE.Line(geometry, new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })));
-  group.add(new THREE.Points(geometry, pointsMaterial({ size: 3, vertexColors: THREE.VertexColors })));
+  group.add(new THREE.Line(geometry, lineMaterial));
+  group.add(new THREE.Points(geometry, pointsMaterial({ size: 3 })));
   return group;
 }
 
@@ -151,7 +162,7 @@ function keyframesLayer(keyframes, colour, size) {
       }
     }
   }
-  return new THREE.LineSegments(lineGeometry(vertices), new THREE.LineBasicMaterial({ color: colour, transparent: true, opacity: 0.75 }));
+  return new THREE.LineSegments(lineGeometry(vertices, colour), lineMaterial);
 }
 
 function loopsLayer(loops) {
@@ -162,15 +173,20 @@ function loopsLayer(loops) {
     const c = new THREE.Color(verdictColours[loop.verdict] || verdictColours.unjudged);
     colours.set([c.r, c.g, c.b, c.r, c.g, c.b], 6 * i);
   });
-  return new THREE.LineSegments(lineGeometry(vertices, colours), new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors }));
+  // Lines are one pixel wide in WebGL: dots at both keyframes make a short loop edge visible.
+  const geometry = lineGeometry(vertices, colours);
+  const group = new THREE.Group();
+  group.add(new THREE.LineSegments(geometry, lineMaterial));
+  group.add(new THREE.Points(geometry, pointsMaterial({ size: 6 })));
+  return group;
 }
 
 runs.forEach((run, r) => {
   const colour = runColours[r % runColours.length];
   if (run.map) addLayer(run, `map (${run.map.count.toLocaleString()} points)`, mapLayer(run.map), null, r === 0);
   if (run.groundtruth) {
-    const geometry = lineGeometry(float32(run.groundtruth.positions));
-    addLayer(run, 'groundtruth (aligned)', new THREE.Line(geometry, new THREE.LineBasicMaterial({ color: 0xbfc5cf })), '#bfc5cf', r === 0);
+    const geometry = lineGeometry(float32(run.groundtruth.positions), 0xbfc5cf);
+    addLayer(run, 'groundtruth (aligned)', new THREE.Line(geometry, lineMaterial), '#bfc5cf', r === 0);
   }
   if (run.trajectory) {
     addLayer(run, run.trajectory.ate ? 'trajectory, coloured by ATE' : 'trajectory', trajectoryLayer(run.trajectory, colour), colour, true);
@@ -182,8 +198,8 @@ runs.forEach((run, r) => {
     addLayer(run, `loops (${text})`, loopsLayer(run.loops), verdictColours.true, true);
   }
   if (run.lost && run.lost.count > 0) {
-    const geometry = lineGeometry(float32(run.lost.positions));
-    addLayer(run, `lost frames (${run.lost.count})`, new THREE.Points(geometry, pointsMaterial({ size: 7, color: 0xff1744 })), '#ff1744', true);
+    const geometry = lineGeometry(float32(run.lost.positions), 0xff1744);
+    addLayer(run, `lost frames (${run.lost.count})`, new THREE.Points(geometry, pointsMaterial({ size: 7 })), '#ff1744', true);
   }
 });
 
@@ -192,7 +208,7 @@ const radius = bounds.isEmpty() ? 1 : Math.max(bounds.getSize(new THREE.Vector3(
 if (!bounds.isEmpty()) bounds.getCenter(centre);
 runs.forEach((run, r) => {
   if (run.keyframes && run.keyframes.count > 0) {
-    addLayer(run, `keyframes (${run.keyframes.count})`, keyframesLayer(run.keyframes, runColours[r % runColours.length], radius * 0.012), runColours[r % runColours.length], r === 0);
+    addLayer(run, `keyframes (${run.keyframes.count})`, keyframesLayer(run.keyframes, runColours[r % runColours.length], radius * 0.008), runColours[r % runColours.length], r === 0);
   }
 });
 
@@ -204,7 +220,7 @@ function resetView() {
   if (Math.abs(side.dot(camera.up)) > 0.9) side.set(0, 1, 0);
   side.addScaledVector(camera.up, -side.dot(camera.up)).normalize();
   const direction = side.multiplyScalar(0.8).addScaledVector(camera.up, 0.9).normalize();
-  camera.position.copy(centre).addScaledVector(direction, radius * 2.4);
+  camera.position.copy(centre).addScaledVector(direction, radius * 1.9);
   camera.near = radius / 500;
   camera.far = radius * 50;
   camera.updateProjectionMatrix();
