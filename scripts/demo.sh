@@ -23,3 +23,4 @@ fi
 "$slamkit" run "$sequence" --out "$run_dir/run"
 echo "demo: trajectory, reports, metrics and plots in $run_dir/run"
 echo "demo: map $run_dir/run/map.ply"
+echo "demo: open $run_dir/run/report.html in a browser: the run on one page"
