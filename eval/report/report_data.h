@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "core/settings/report_settings.h"
 #include "eval/report/run_folder.h"
 #include "fusion/ply_cloud.h"
 
@@ -18,8 +19,9 @@ namespace slamkit::eval {
 std::vector<size_t> strided_subset(size_t total, size_t budget);
 
 struct ReportOptions {
-  size_t point_budget = 300'000;  // map points in the page, shared out among the runs' maps
-  std::string generator;          // "slamkit VERSION", shown in the footer
+  // Map points in the page, shared out among the runs' maps.
+  size_t point_budget = size_t(ReportSettings{}.point_budget);
+  std::string generator;  // "slamkit VERSION", shown in the footer
 };
 
 // `maps[i]` is runs[i]'s map.ply read whole (empty when it has none).
