@@ -1,12 +1,18 @@
-// slamkit info SEQ: what a sequence holds, before spending time on it.
+// slamkit info SEQ: what a sequence holds, before spending time on it; with --stats, how its
+// sensor behaves (eval/sequence_stats), to compare synthetic sequences with real ones.
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include <opencv2/core.hpp>
 
 #include "bin/command.h"
 #include "bin/sequence_options.h"
 #include "core/progress.h"
+#include "eval/sequence_stats/sequence_stats.h"
+#include "eval/sequence_stats/stats_json.h"
+#include "eval/sequence_stats/stats_text.h"
+#include "io/atomic_file.h"
 #include "io/tum_sequence.h"
 
 namespace slamkit::cli {
@@ -16,7 +22,20 @@ struct InfoArgs {
   std::string folder;
   SequenceOptions sequence;
   size_t sample = 30;
+  bool stats = false;
+  std::optional<std::filesystem::path> json;
 };
+
+void print_stats(const TumSequence& seq, const InfoArgs& args) {
+  stats::SequenceStatsSettings settings;
+  settings.sample = args.sample;
+  const stats::SequenceStats result = stats::compute_sequence_stats(seq, settings);
+  stats::print_stats(result, stdout);
+  if (args.json)
+    write_file_atomically(*args.json, [&](std::ostream& out) {
+      out << stats::stats_json(result, seq.folder().string()).dump(2) << "\n";
+    });
+}
 
 void print_info(const InfoArgs& args) {
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
@@ -55,16 +74,17 @@ void print_info(const InfoArgs& args) {
 
   if (!seq.groundtruth()) {
     std::printf("groundtruth none\n");
-    return;
+  } else {
+    const Trajectory& gt = *seq.groundtruth();
+    size_t covered = 0;
+    for (size_t i = 0; i < seq.size(); ++i)
+      if (gt.nearest(seq.stamp(i), args.sequence.max_time_diff)) ++covered;
+    std::printf("groundtruth %zu poses, %.6f .. %.6f; %zu of %zu frames (%.1f%%) have a pose "
+                "within %.3f s\n",
+                gt.size(), gt.start_time(), gt.end_time(), covered, seq.size(),
+                100.0 * covered / seq.size(), args.sequence.max_time_diff);
   }
-  const Trajectory& gt = *seq.groundtruth();
-  size_t covered = 0;
-  for (size_t i = 0; i < seq.size(); ++i)
-    if (gt.nearest(seq.stamp(i), args.sequence.max_time_diff)) ++covered;
-  std::printf("groundtruth %zu poses, %.6f .. %.6f; %zu of %zu frames (%.1f%%) have a pose "
-              "within %.3f s\n",
-              gt.size(), gt.start_time(), gt.end_time(), covered, seq.size(),
-              100.0 * covered / seq.size(), args.sequence.max_time_diff);
+  if (args.stats) print_stats(seq, args);
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {
@@ -72,8 +92,12 @@ const bool kRegistered = register_command([](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand("info", "Summarise a TUM RGB-D sequence folder");
   cmd->add_option("sequence", args->folder, "Sequence folder (TUM layout)")->required();
   cmd->add_option("--sample", args->sample,
-                  "Frames decoded to measure depth validity (0 = all)")
+                  "Frames decoded to measure depth validity and the statistics (0 = all)")
       ->capture_default_str();
+  CLI::Option* stats = cmd->add_flag(
+      "--stats", args->stats,
+      "Also measure depth noise, invalid depth, sharpness and ORB match inliers");
+  cmd->add_option("--json", args->json, "Write the statistics to this JSON file")->needs(stats);
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { print_info(*args); });
 });
