@@ -53,18 +53,24 @@ std::optional<PatchNoise> fit_patch(const Eigen::Matrix3Xd& points, const DepthN
   const Eigen::VectorXd quadric = design.colPivHouseholderQr().solve(h);
   const double plane_rss = h.squaredNorm();
   const double quadric_rss = (design * quadric - h).squaredNorm();
-  if (plane_rss - quadric_rss > s.max_curvature_share * plane_rss) return std::nullopt;
+  // Below a micrometre RMS the plane is exact and the comparison would be of rounding errors.
+  const bool exact = plane_rss < 1e-12 * double(n);
+  if (!exact && plane_rss - quadric_rss > s.max_curvature_share * plane_rss) return std::nullopt;
 
-  // The residual along each pixel's ray, in depth: z minus the depth where the ray meets the
-  // plane (the sensor errs along the ray, not across the surface).
-  const double offset = normal.dot(centroid);
-  double rss = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d ray = points.col(i) / points(2, i);  // z = 1
-    const double residual = points(2, i) - offset / normal.dot(ray);
-    rss += residual * residual;
-  }
-  return PatchNoise{centroid.z(), std::sqrt(rss / double(n - 3))};  // a plane has 3 dof
+  // The noise: the residual in depth of a least-squares fit of z over the ray directions, not
+  // the distance to the PCA plane. The sensor errs in depth, and where that noise is not small
+  // against the patch's extent (far patches) PCA tilts the plane to follow it and inflates the
+  // residual (by 16% at 3 m in the tests). The quadratic terms absorb the perspective bend of a
+  // tilted plane's depth; the quadric test above has already ruled out a curved surface.
+  const Eigen::VectorXd x = points.row(0).cwiseQuotient(points.row(2)).transpose();
+  const Eigen::VectorXd y = points.row(1).cwiseQuotient(points.row(2)).transpose();
+  const Eigen::VectorXd dx = x.array() - x.mean(), dy = y.array() - y.mean();
+  design << Eigen::VectorXd::Ones(n), dx, dy, dx.cwiseProduct(dx), dx.cwiseProduct(dy),
+      dy.cwiseProduct(dy);
+  const Eigen::VectorXd z = points.row(2).transpose();
+  const Eigen::VectorXd depth_fit = design.colPivHouseholderQr().solve(z);
+  const double rss = (design * depth_fit - z).squaredNorm();
+  return PatchNoise{centroid.z(), std::sqrt(rss / double(n - 6))};  // the fit has 6 dof
 }
 
 }  // namespace
