@@ -14,12 +14,13 @@ struct DepthNoiseSettings {
   int patch = 15;  // side in pixels; the patches tile the image without overlapping
   // A 4-neighbour step larger than this share of the patch's depth is a discontinuity.
   double max_step = 0.05;
-  // Curved or folded patches: dropped when a quadric explains more than this share of the
-  // plane's squared residual. Pure noise explains ~3/(N-6) of it, whatever its size, so
-  // unlike a threshold on the eigenvalue ratio this keeps noisy far patches.
+  // Curved or folded patches: dropped when a quadric over the PCA plane's axes explains more
+  // than this share of the plane's squared residual. Pure noise explains about 3/N of it
+  // (N pixels), whatever its size, so unlike a threshold on the PCA eigenvalue ratio, which
+  // noise alone raises to ~0.5 for a 15 px patch at 4 m, this keeps noisy far patches.
   double max_curvature_share = 0.2;
-  // Patches seen at a grazing angle (cosine of the ray to the normal below this) are dropped:
-  // there a small error of the fitted plane becomes a large depth residual.
+  // Patches seen at a grazing angle (cosine of the ray to the PCA normal below this) are
+  // dropped: their depth bends across the patch faster than the depth fit follows.
   double min_cos_incidence = 0.2;
   double bin_width = 0.5;  // metres
   double min_depth = 0.5;  // the bins cover [min_depth, max_depth)
@@ -29,7 +30,7 @@ struct DepthNoiseSettings {
 
 struct PatchNoise {
   double depth = 0;  // metres, the patch's mean depth
-  double sigma = 0;  // metres, std of the depth (z) residual to the fitted plane
+  double sigma = 0;  // metres, std of the depth (z) residual to the fitted surface
 };
 
 // (x/z, y/z) of the ray through every pixel of the raw image, through the lens model: CV_64FC2.

@@ -69,8 +69,8 @@ TEST(InfoStats, RealFr2DeskHasKinectLikeNoiseAndConsistentMatches) {
   ASSERT_EQ(run.code, 0) << run.err;
   const nlohmann::json stats = read_json(json);
   EXPECT_EQ(stats["sampled"], 10);
-  // Kinect v1: depth error grows as z^2, about 1.4-2.9 mm at 1 m in the literature; the
-  // residual here also holds the desk's roughness.
+  // Kinect v1: depth error grows as z^2, with b about 1.5-2 mm/m^2 in the literature; the
+  // residual here also holds the desk's roughness. Loose bounds: the sign and the magnitude.
   const nlohmann::json& fit = stats["depth_noise"]["fit"];
   ASSERT_FALSE(fit.is_null());
   EXPECT_GT(fit["b"].get<double>(), 0.0005);
