@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datasets/synth/sensor_model.h"
+#include "io/tum_sequence.h"
 #include "support/synthetic_sequence.h"
 #include "support/test_data.h"
 
@@ -93,6 +94,17 @@ TEST(InfoStats, BadInputExitsNonZeroNamingTheFile) {
       "info --stats " + quoted(sequence) + " --sample 2 --json " + quoted(unwritable));
   EXPECT_NE(json.code, 0);
   EXPECT_NE(json.err.find(unwritable.string()), std::string::npos) << json.err;
+
+  // Frame 1's depth gone: only the statistics read it (the pair of sampled frame 0).
+  const fs::path copy = dir / "desk10";
+  fs::copy(sequence, copy, fs::copy_options::recursive);
+  const TumSequence opened = TumSequence::open(copy);
+  const fs::path lost = copy / opened.files(1).depth.file;
+  fs::remove(lost);
+  const test::SlamkitResult frame =
+      test::run_slamkit_apart("info --stats " + quoted(copy) + " --sample 2");
+  EXPECT_EQ(frame.code, 2);
+  EXPECT_NE(frame.err.find(lost.filename().string()), std::string::npos) << frame.err;
 
   const test::SlamkitResult without_stats =
       test::run_slamkit_apart("info " + quoted(sequence) + " --json " + quoted(dir / "s.json"));
