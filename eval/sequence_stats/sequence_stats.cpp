@@ -103,12 +103,14 @@ SequenceStats compute_sequence_stats(const TumSequence& sequence,
   stats.patches = patches.size();
   stats.noise_bins = bin_noise(patches, settings.noise);
   stats.noise_model = fit_noise_model(stats.noise_bins, settings.noise);
-  std::vector<double> speeds, sharpness;
-  for (const FrameRecord& f : stats.sampled)
-    if (f.angular_speed) {
-      speeds.push_back(*f.angular_speed);
-      sharpness.push_back(f.sharpness);
-    }
+  std::vector<double> all_sharpness, speeds, sharpness;
+  for (const FrameRecord& f : stats.sampled) {
+    all_sharpness.push_back(f.sharpness);
+    if (!f.angular_speed) continue;
+    speeds.push_back(*f.angular_speed);
+    sharpness.push_back(f.sharpness);
+  }
+  stats.median_sharpness = median(all_sharpness);
   stats.frames_with_speed = speeds.size();
   stats.speed_bins = speed_bins(stats.sampled, settings.speed_edges);
   stats.sharpness_speed_correlation = pearson(speeds, sharpness);

@@ -52,6 +52,7 @@ struct SequenceStats {
   std::vector<DepthBin> noise_bins;
   std::optional<NoiseModel> noise_model;
   InvalidCounts invalid;
+  double median_sharpness = 0;  // over all sampled frames, with groundtruth or not
   std::vector<SpeedBin> speed_bins;
   size_t frames_with_speed = 0;
   std::optional<double> sharpness_speed_correlation;  // Pearson, over frames with a speed

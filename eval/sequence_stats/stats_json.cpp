@@ -28,6 +28,7 @@ nlohmann::json sharpness_json(const SequenceStats& s) {
                     {"high", std::isinf(b.high) ? nlohmann::json(nullptr) : nlohmann::json(b.high)},
                     {"frames", b.frames}, {"median_sharpness", b.median_sharpness}});
   return {{"measure", "laplacian_variance"},
+          {"median", s.median_sharpness},
           {"frames_with_speed", s.frames_with_speed},
           {"bins", bins},
           {"correlation", or_null(s.sharpness_speed_correlation)}};

@@ -24,8 +24,9 @@ void print_noise(const SequenceStats& s, std::FILE* out) {
 }
 
 void print_sharpness(const SequenceStats& s, std::FILE* out) {
-  std::fprintf(out, "sharpness    variance of the Laplacian of the grey image; %zu of %zu frames "
-               "have an angular speed from groundtruth\n", s.frames_with_speed, s.sampled.size());
+  std::fprintf(out, "sharpness    variance of the Laplacian of the grey image: median %.1f; %zu of "
+               "%zu frames have an angular speed from groundtruth\n", s.median_sharpness,
+               s.frames_with_speed, s.sampled.size());
   for (const SpeedBin& b : s.speed_bins) {
     if (std::isinf(b.high))
       std::fprintf(out, "  %5.0f+    deg/s  %5zu frames", b.low, b.frames);

@@ -45,6 +45,7 @@ TEST(InfoStats, SyntheticSequenceShowsItsSensorModelsNoise) {
   EXPECT_EQ(stats["sampled"], 10);
   EXPECT_EQ(stats["per_frame"].size(), 10u);
   EXPECT_EQ(stats["sharpness"]["frames_with_speed"], 10);
+  EXPECT_GT(stats["sharpness"]["median"].get<double>(), 0.0);
   // The renderer's depth noise is SensorModel::depth_sigma: the fullest bin finds it.
   const nlohmann::json bin = fullest_bin(stats);
   ASSERT_GT(bin["patches"].get<int>(), 100);
