@@ -94,10 +94,11 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_option("--sample", args->sample,
                   "Frames decoded to measure depth validity and the statistics (0 = all)")
       ->capture_default_str();
-  CLI::Option* stats = cmd->add_flag(
+  CLI::Option* stats_flag = cmd->add_flag(
       "--stats", args->stats,
       "Also measure depth noise, invalid depth, sharpness and ORB match inliers");
-  cmd->add_option("--json", args->json, "Write the statistics to this JSON file")->needs(stats);
+  cmd->add_option("--json", args->json, "Write the statistics to this JSON file")
+      ->needs(stats_flag);
   add_sequence_options(cmd, args->sequence);
   cmd->callback([args] { print_info(*args); });
 });

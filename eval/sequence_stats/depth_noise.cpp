@@ -8,8 +8,8 @@
 namespace slamkit::stats {
 namespace {
 
-// The patch at (u0, v0) as 3D points, or nothing when a pixel is invalid or a step between
-// neighbours is a discontinuity.
+// The patch with top-left pixel (u0, v0) as 3D points, or nothing when a pixel is invalid or a
+// step between neighbours is a discontinuity.
 std::optional<Eigen::Matrix3Xd> patch_points(const cv::Mat& depth, const cv::Mat& rays, int u0,
                                              int v0, const DepthNoiseSettings& s) {
   const int n = s.patch;
@@ -43,7 +43,7 @@ std::optional<PatchNoise> fit_patch(const Eigen::Matrix3Xd& points, const DepthN
   const Eigen::Vector3d normal = pca.eigenvectors().col(0);
   if (std::abs(normal.dot(centroid.normalized())) < s.min_cos_incidence) return std::nullopt;
 
-  // Curvature: a quadric h(s, t) over the plane's own axes against the plane (h = 0).
+  // Curvature: a quadric h(a1, a2) over the plane's own axes against the plane (h = 0).
   const Eigen::VectorXd h = normal.transpose() * centred;
   const Eigen::VectorXd a1 = pca.eigenvectors().col(2).transpose() * centred;
   const Eigen::VectorXd a2 = pca.eigenvectors().col(1).transpose() * centred;

@@ -54,8 +54,8 @@ std::vector<DepthBin> bin_noise(const std::vector<PatchNoise>& patches,
 
 // sigma(z) = a + b z^2 (the stereo/structured-light law: depth error grows with z^2).
 struct NoiseModel {
-  double a = 0;  // metres
-  double b = 0;  // 1/metres
+  double a = 0;     // metres
+  double b = 0;     // 1/metres
   size_t bins = 0;  // bins the fit used
 };
 

@@ -7,9 +7,9 @@
 namespace slamkit::stats {
 
 struct InvalidDepthSettings {
-  int edge_radius = 3;       // pixels: the edge region is every pixel this close to a discontinuity
-  double edge_jump = 0.1;    // a discontinuity: valid depths in the window differ by more than
-                             // this share of the nearest one
+  int edge_radius = 3;     // pixels: the edge region is every pixel this close to a discontinuity
+  double edge_jump = 0.1;  // a discontinuity: valid depths in the window differ by more than
+                           // this share of the nearest one
 };
 
 struct InvalidCounts {
@@ -20,7 +20,10 @@ struct InvalidCounts {
 
   InvalidCounts& operator+=(const InvalidCounts& other);
   double share() const { return pixels ? double(invalid) / double(pixels) : 0.0; }
-  double edge_share() const { return edge_pixels ? double(edge_invalid) / double(edge_pixels) : 0.0; }
+  double edge_region_share() const { return pixels ? double(edge_pixels) / double(pixels) : 0.0; }
+  double edge_share() const {
+    return edge_pixels ? double(edge_invalid) / double(edge_pixels) : 0.0;
+  }
   double off_edge_share() const {
     const size_t rest = pixels - edge_pixels;
     return rest ? double(invalid - edge_invalid) / double(rest) : 0.0;

@@ -13,9 +13,9 @@ size_t pose_inliers(const std::vector<cv::Point3f>& points, const std::vector<cv
   std::vector<int> inliers;
   // Pixels are already undistorted, hence no distortion coefficients. OpenCV's RANSAC seeds
   // its generator the same way on every call, so the count repeats.
-  const bool found = cv::solvePnPRansac(points, pixels, K, cv::noArray(), rvec, tvec, false,
-                                        settings.iterations, float(settings.threshold), 0.999,
-                                        inliers);
+  const bool found =
+      cv::solvePnPRansac(points, pixels, K, cv::noArray(), rvec, tvec, false, settings.iterations,
+                         float(settings.threshold), 0.999, inliers);
   return found ? inliers.size() : 0;
 }
 

@@ -93,8 +93,8 @@ SequenceStats compute_sequence_stats(const TumSequence& sequence,
     if (i + 1 < sequence.size()) {
       const FrameFeatures a = features_of(i, frame);
       const RgbdFrame next = sequence.load(i + 1);
-      record.pair = match_inliers(a, frame.depth, features_of(i + 1, next), camera,
-                                  settings.matching);
+      record.pair =
+          match_inliers(a, frame.depth, features_of(i + 1, next), camera, settings.matching);
     }
     stats.sampled.push_back(record);
     progress.update(k + 1);

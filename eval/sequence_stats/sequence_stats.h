@@ -26,7 +26,7 @@ struct SequenceStatsSettings {
 struct FrameRecord {
   size_t index = 0;
   double stamp = 0;
-  double sharpness = 0;  // laplacian_variance()
+  double sharpness = 0;                 // laplacian_variance()
   std::optional<double> angular_speed;  // deg/s from groundtruth
   size_t planar_patches = 0;
   std::optional<PairInliers> pair;

@@ -6,8 +6,10 @@ namespace slamkit::stats {
 namespace {
 
 void print_noise(const SequenceStats& s, std::FILE* out) {
-  std::fprintf(out, "depth noise  %zu planar patches; median std of the depth residual per bin "
-               "(includes surface roughness on real data)\n", s.patches);
+  std::fprintf(out,
+               "depth noise  %zu planar patches; median std of the depth residual per bin "
+               "(includes surface roughness on real data)\n",
+               s.patches);
   for (const DepthBin& b : s.noise_bins) {
     if (b.patches == 0) {
       std::fprintf(out, "  %.1f-%.1f m  %7zu patches\n", b.low, b.high, b.patches);
@@ -24,9 +26,10 @@ void print_noise(const SequenceStats& s, std::FILE* out) {
 }
 
 void print_sharpness(const SequenceStats& s, std::FILE* out) {
-  std::fprintf(out, "sharpness    variance of the Laplacian of the grey image: median %.1f; %zu of "
-               "%zu frames have an angular speed from groundtruth\n", s.median_sharpness,
-               s.frames_with_speed, s.sampled.size());
+  std::fprintf(out,
+               "sharpness    variance of the Laplacian of the grey image: median %.1f; %zu of "
+               "%zu frames have an angular speed from groundtruth\n",
+               s.median_sharpness, s.frames_with_speed, s.sampled.size());
   for (const SpeedBin& b : s.speed_bins) {
     if (std::isinf(b.high))
       std::fprintf(out, "  %5.0f+    deg/s  %5zu frames", b.low, b.frames);
@@ -47,15 +50,17 @@ void print_sharpness(const SequenceStats& s, std::FILE* out) {
 void print_stats(const SequenceStats& s, std::FILE* out) {
   std::fprintf(out, "stats over   %zu sampled frames of %zu\n", s.sampled.size(), s.frames);
   print_noise(s, out);
-  std::fprintf(out, "invalid      %.2f%% of depth pixels; %.2f%% within depth edges (%.2f%% of "
-               "pixels), %.2f%% elsewhere\n", 100 * s.invalid.share(), 100 * s.invalid.edge_share(),
-               s.invalid.pixels ? 100.0 * double(s.invalid.edge_pixels) / double(s.invalid.pixels) : 0.0,
-               100 * s.invalid.off_edge_share());
+  std::fprintf(out,
+               "invalid      %.2f%% of depth pixels; %.2f%% within depth edges (%.2f%% of "
+               "pixels), %.2f%% elsewhere\n",
+               100 * s.invalid.share(), 100 * s.invalid.edge_share(),
+               100 * s.invalid.edge_region_share(), 100 * s.invalid.off_edge_share());
   print_sharpness(s, out);
   const InlierSummary& m = s.inliers;
-  std::fprintf(out, "ORB inliers  %zu of %zu consecutive pairs fitted; inlier share median %.3f "
-               "(quartiles %.3f, %.3f); median %.0f matches, %.0f with depth\n", m.fitted,
-               m.pairs, m.median, m.q1, m.q3, m.median_matches, m.median_correspondences);
+  std::fprintf(out,
+               "ORB inliers  %zu of %zu consecutive pairs fitted; inlier share median %.3f "
+               "(quartiles %.3f, %.3f); median %.0f matches, %.0f with depth\n",
+               m.fitted, m.pairs, m.median, m.q1, m.q3, m.median_matches, m.median_correspondences);
 }
 
 }  // namespace slamkit::stats

@@ -1,10 +1,10 @@
 // Depth noise on planes of known noise: the per-bin sigma and the a + b z^2 fit come back.
+#include "eval/sequence_stats/depth_noise.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <opencv2/core.hpp>
-
-#include "eval/sequence_stats/depth_noise.h"
 
 namespace slamkit::stats {
 namespace {
@@ -105,8 +105,8 @@ TEST(DepthNoise, DiscontinuitiesCurvedSurfacesAndHolesAreNotPlanarPatches) {
     for (int u = 7; u < holes.cols; u += 15) holes.at<float>(v, u) = 0;
   EXPECT_TRUE(patch_noise(holes, rays, settings).empty());
   // The same plane without holes: every patch, noiseless.
-  const auto whole = patch_noise(cv::Mat(camera.height, camera.width, CV_32F, cv::Scalar(1.5)),
-                                 rays, settings);
+  const auto whole =
+      patch_noise(cv::Mat(camera.height, camera.width, CV_32F, cv::Scalar(1.5)), rays, settings);
   EXPECT_EQ(whole.size(), size_t(32 * 42));
   for (const PatchNoise& p : whole) EXPECT_NEAR(p.sigma, 0.0, 1e-6);
 }

@@ -36,8 +36,8 @@ TEST(InfoStats, SyntheticSequenceShowsItsSensorModelsNoise) {
   const test::SlamkitResult run =
       test::run_slamkit_apart("info --stats " + quoted(sequence) + " --json " + quoted(json));
   ASSERT_EQ(run.code, 0) << run.err;
-  for (const char* line : {"frames      10", "depth noise", "fit sigma(z) = a + b z^2",
-                           "invalid", "sharpness", "correlation", "ORB inliers"})
+  for (const char* line : {"frames      10", "depth noise", "fit sigma(z) = a + b z^2", "invalid",
+                           "sharpness", "correlation", "ORB inliers"})
     EXPECT_NE(run.out.find(line), std::string::npos) << line << "\n" << run.out;
 
   const nlohmann::json stats = read_json(json);
@@ -66,8 +66,9 @@ TEST(InfoStats, SyntheticSequenceShowsItsSensorModelsNoise) {
 TEST(InfoStats, RealFr2DeskHasKinectLikeNoiseAndConsistentMatches) {
   SLAMKIT_REQUIRE_DATA(sequence, "rgbd_dataset_freiburg2_desk_first50");
   const fs::path json = test::temp_dir("info_stats_fr2") / "stats.json";
-  const test::SlamkitResult run = test::run_slamkit_apart(
-      "info --stats " + quoted(sequence) + " --depth-scale 5208 --sample 10 --json " + quoted(json));
+  const test::SlamkitResult run =
+      test::run_slamkit_apart("info --stats " + quoted(sequence) +
+                              " --depth-scale 5208 --sample 10 --json " + quoted(json));
   ASSERT_EQ(run.code, 0) << run.err;
   const nlohmann::json stats = read_json(json);
   EXPECT_EQ(stats["sampled"], 10);

@@ -1,7 +1,7 @@
 // Invalid depth counts on an image whose invalid pixels and edge region are known exactly.
-#include <gtest/gtest.h>
-
 #include "eval/sequence_stats/invalid_depth.h"
+
+#include <gtest/gtest.h>
 
 namespace slamkit::stats {
 namespace {
@@ -20,6 +20,7 @@ TEST(InvalidDepth, CountsInvalidPixelsOverallAndNearTheDiscontinuityExactly) {
   EXPECT_EQ(c.edge_pixels, 5u * 480u);
   EXPECT_EQ(c.edge_invalid, 480u);
   EXPECT_DOUBLE_EQ(c.share(), 11.0 / 640.0);
+  EXPECT_DOUBLE_EQ(c.edge_region_share(), 5.0 / 640.0);
   EXPECT_DOUBLE_EQ(c.edge_share(), 1.0 / 5.0);
   EXPECT_DOUBLE_EQ(c.off_edge_share(), 10.0 / 635.0);
 

@@ -1,12 +1,13 @@
 // ORB match inliers: a textured plane seen from two known poses (the second image rendered by
 // warping the first with the plane's homography) is explained by one motion; correspondences
 // of which a known fraction is replaced by random pixels give that fraction of outliers.
+#include "eval/sequence_stats/match_inliers.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
-#include "eval/sequence_stats/match_inliers.h"
 #include "features/orb_extractor.h"
 
 namespace slamkit::stats {
@@ -42,8 +43,8 @@ TEST(MatchInliers, WarpedPlaneIsExplainedByOneMotion) {
   const Eigen::Isometry3d T = second_pose();
   Eigen::Matrix3d K;
   K << camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1;
-  const Eigen::Matrix3d H = K *
-      (T.linear() + T.translation() * Eigen::Vector3d(0, 0, 1).transpose() / plane_depth) *
+  const Eigen::Matrix3d H =
+      K * (T.linear() + T.translation() * Eigen::Vector3d(0, 0, 1).transpose() / plane_depth) *
       K.inverse();
   cv::Matx33d H_cv;
   for (int r = 0; r < 3; ++r)

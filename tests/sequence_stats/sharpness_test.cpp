@@ -1,5 +1,7 @@
 // Sharpness falls as blur grows; angular speed from a trajectory of known rotation rate; the
 // order statistics and correlation the summaries use.
+#include "eval/sequence_stats/sharpness.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 
 #include "eval/sequence_stats/angular_speed.h"
 #include "eval/sequence_stats/distribution.h"
-#include "eval/sequence_stats/sharpness.h"
 
 namespace slamkit::stats {
 namespace {
