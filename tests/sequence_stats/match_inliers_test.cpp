@@ -84,10 +84,15 @@ TEST(MatchInliers, KnownShareOfRandomCorrespondencesAreOutliers) {
   }
   const MatchInlierSettings settings;
   EXPECT_EQ(pose_inliers(points, pixels, camera, settings), 200u);
-  // Every third correspondence goes to a random pixel: 67 outliers (one may land near its
-  // true pixel by chance: 2.45 px of a 640x480 image is a 1e-4 chance each).
-  for (size_t i = 0; i < pixels.size(); i += 3)
-    pixels[i] = {float(rng.uniform(0.0, 639.0)), float(rng.uniform(0.0, 479.0))};
+  // Every third correspondence is made an outlier: alternately a random pixel and its true
+  // pixel moved 6 px, just past the 2.45 px threshold. 67 outliers (a random pixel may land
+  // near its true one by chance: a 1e-4 chance each).
+  for (size_t i = 0; i < pixels.size(); i += 3) {
+    const double angle = rng.uniform(0.0, 2 * M_PI);
+    pixels[i] =
+        i % 2 ? cv::Point2f(float(rng.uniform(0.0, 639.0)), float(rng.uniform(0.0, 479.0)))
+              : pixels[i] + cv::Point2f(float(6 * std::cos(angle)), float(6 * std::sin(angle)));
+  }
   const size_t inliers = pose_inliers(points, pixels, camera, settings);
   EXPECT_GE(inliers, 133u);
   EXPECT_LE(inliers, 134u);
