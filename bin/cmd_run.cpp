@@ -71,6 +71,11 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
         "outlier removal, %.2f s\n",
         result.fusion.frames, result.fusion.raw_points, result.fusion.after_voxel_grid,
         settings.map.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
+  if (result.fusion.beyond_grid > 0)
+    std::fprintf(stderr,
+                 "warning: %zu map points lie over 2^20 voxels (10 km at 1 cm) from the origin and were left "
+                 "out of map.ply (a trajectory that flew off?)\n",
+                 result.fusion.beyond_grid);
   if (seq.groundtruth() && settings.pipeline.evaluate)
     std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after local and global BA\n",
                 1000 * eval::ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),

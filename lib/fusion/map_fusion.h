@@ -1,6 +1,6 @@
 #pragma once
 // The point-cloud map (docs/method.md#map-fusion): frames back-projected with their final
-// poses into one coloured cloud, voxel-grid down-sampled, statistical outliers removed,
+// poses into one coloured cloud, down-sampled on a voxel grid, isolated voxels left out,
 // written as PLY. The only module that includes PCL (in its .cpp files: callers never see PCL
 // types).
 #include <Eigen/Geometry>
@@ -35,19 +35,19 @@ struct FusionFrame {
 struct FusionReport {
   size_t frames = 0;
   size_t raw_points = 0;        // back-projected, before any filter
-  size_t after_voxel_grid = 0;  // after the last (global) voxel-grid pass
+  size_t beyond_grid = 0;       // of those, so far from the origin that no voxel holds them
+  size_t after_voxel_grid = 0;  // occupied voxels
   size_t after_outlier_removal = 0;
-  // Most points held at once (merged cloud plus the batches in flight): the memory bound.
-  // At 32 bytes a point (pcl::PointXYZRGB), with 2 threads and the default settings it stays
-  // near 2 x the map's voxel count + 3 batches of raw points, whatever the frame count.
-  size_t peak_points = 0;
   double seconds = 0;
 };
 
-// Back-projects the frames (their samples, or loaded again from the sequence, in parallel batches of
-// settings.batch_frames; each batch voxelised before it is merged, so memory stays bounded),
-// filters, and writes `ply_path` (binary unless !settings.binary_ply). The output is the same
-// at any thread count. progress(done, total) is called on the calling thread.
+// Back-projects the frames (their samples, or loaded again from the sequence, settings.batch_frames
+// at a time in parallel) into a voxel grid of settings.voxel_size that keeps each voxel's sums
+// (voxel_map.h), so memory grows with the voxels, not the frames (each frame's samples are
+// released once binned); then takes every voxel's
+// centroid and mean colour, leaves out voxels with few occupied neighbours, and writes `ply_path` (binary unless
+// !settings.binary_ply). The output is the same at any thread count. progress(done, total) is
+// called on the calling thread.
 //
 // Every settings.pixel_stride-th raw pixel (u, v) is undistorted once for the whole grid
 // (the depth is registered to colour in the raw lens geometry), so a point is
@@ -57,7 +57,7 @@ struct FusionReport {
 // Throws InputError naming the sequence folder for a frame index out of range, the image for
 // an unreadable frame, ply_path when it cannot be written (checked before any work) or when
 // no frame has valid depth, and "fusion settings" for a setting out of range.
-FusionReport fuse_map(const TumSequence& sequence, const std::vector<FusionFrame>& frames,
+FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> frames,
                       const FusionSettings& settings, const std::filesystem::path& ply_path,
                       const std::function<void(size_t, size_t)>& progress = {});
 

@@ -336,14 +336,14 @@ void visit_fields(FusionSettings& s, V& v) {
           from_slamkit("keyframe samples kept from tracking for fusion (MB); 0 = load all"));
   v.field("max_depth", s.max_depth, above(0),
           from_slamkit("metres: Kinect noise grows with z^2 (4 mm at 1.5 m)"));
-  v.field("voxel_size", s.voxel_size, above(0), from_slamkit("metres, PCL VoxelGrid leaf"));
+  v.field("voxel_size", s.voxel_size, above(0), from_slamkit("metres, the voxel grid's leaf"));
   v.field("batch_frames", s.batch_frames, at_least(1),
-          from_slamkit("frames voxelised together before merging (bounds memory)"));
+          from_slamkit("frames binned in parallel at a time (bounds memory)"));
   v.field("remove_outliers", s.remove_outliers,
-          from_slamkit("PCL StatisticalOutlierRemoval on the fused cloud"));
-  v.field("outlier_neighbours", s.outlier_neighbours, at_least(1), from_slamkit("its mean_k"));
-  v.field("outlier_std_ratio", s.outlier_std_ratio, at_least(0),
-          from_slamkit("its stddev_mul_thresh"));
+          from_slamkit("leave out voxels with few occupied neighbours"));
+  v.field("outlier_neighbour_share", s.outlier_neighbour_share, Range{0, 1},
+          from_slamkit("a voxel with fewer occupied neighbours than this share of the median's "
+                       "is left out"));
   v.field("binary_ply", s.binary_ply, from_slamkit("binary PLY; false = ASCII"));
 }
 

@@ -159,13 +159,14 @@ FusionReport fuse_final_map(const Map& map, const std::vector<TrackedFrame>& tra
       if (!tracked[i].lost) frames.push_back({tracked[i].index, tracked[i].T_w_c, nullptr});
   }
   if (frames.empty()) return {};
-  const FusionReport report =
-      fuse_map(sequence, frames, settings.map, ply_path, [&](size_t done, size_t total) {
-        if (progress) progress("map", done, total);
-      });
   // The keyframes' centres beside the map, so that a viewer shows both.
+  for (FusionFrame& k : keyframes) k.samples.reset();
   write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
-  return report;
+  samples = KeyframeSamples();  // `frames` holds the samples now: fusion frees each once fused
+  return fuse_map(sequence, std::move(frames), settings.map, ply_path,
+                  [&](size_t done, size_t total) {
+                    if (progress) progress("map", done, total);
+                  });
 }
 
 }  // namespace slamkit

@@ -11,7 +11,7 @@ enum class LostFrames {
 
 struct PipelineSettings {
   int threads = 0;        // (slamkit) OpenMP threads for the parallel stages; 0 = all cores
-  int chunk_frames = 32;  // (slamkit) frames prepared in parallel at a time (bounds memory)
+  int chunk_frames = 16;  // (slamkit) frames prepared in parallel at a time (bounds memory)
   bool evaluate = true;   // (slamkit) with groundtruth, compute ATE/RPE at the end of a run
   LostFrames lost_frames = LostFrames::kOmit;  // (ORB-SLAM2)
 };
