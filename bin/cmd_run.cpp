@@ -86,6 +86,11 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
       "frames/s\n",
       t.prepare, t.track, t.local_ba, t.loops, t.global_ba, t.fusion, t.write, t.total,
       double(result.frames.size()) / t.total);
+  const StageTimes& cpu = result.cpu_seconds;
+  std::printf("CPU         track %.2f s (with preparation and local BA), loops %.2f, global BA "
+              "%.2f, fusion %.2f, write %.2f; total %.2f s; peak memory %.0f MB\n",
+              cpu.track, cpu.loops, cpu.global_ba, cpu.fusion, cpu.write, cpu.total,
+              result.peak_rss_mb);
 }
 
 void run(const RunArgs& args) {

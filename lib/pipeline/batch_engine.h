@@ -50,6 +50,10 @@ struct RunResult {
   bool global_ba_run = false;
   FusionReport fusion;  // frames == 0 unless the map was fused
   StageTimes seconds;
+  // Process CPU seconds of each stage, every thread counted. Preparation and local BA run
+  // beside tracking, so `track` holds theirs and `prepare` and `local_ba` stay 0.
+  StageTimes cpu_seconds;
+  double peak_rss_mb = 0;  // the process's most resident memory up to the map's writing
   int threads = 1;
   LostFrames lost_frames = LostFrames::kOmit;  // whether trajectories hold the lost frames
 

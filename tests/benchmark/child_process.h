@@ -1,0 +1,25 @@
+#pragma once
+// Runs a program as a child process and measures it as /usr/bin/time does: wall time, CPU time
+// (user + system, all threads) and peak resident memory, from wait4's rusage. The benchmark
+// measures slamkit and ORB-SLAM2 this same way, each in a fresh process.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace slamkit::bench {
+
+struct ChildUsage {
+  int exit_code = -1;
+  double wall_s = 0;
+  double cpu_s = 0;
+  double peak_rss_mb = 0;
+};
+
+// argv[0] is the program's path. Standard output and error go to `log`; the child starts in
+// `working_dir` with `extra_env` ("NAME=value") added to this process's environment. Throws
+// std::runtime_error when the program cannot be started.
+ChildUsage run_child(const std::vector<std::string>& argv, const std::filesystem::path& log,
+                     const std::filesystem::path& working_dir,
+                     const std::vector<std::string>& extra_env = {});
+
+}  // namespace slamkit::bench
