@@ -136,6 +136,35 @@ KinectSettings read_kinect_settings(const YAML::Node& node, const std::string& f
   return s;
 }
 
+void check_kinect_settings(const KinectSettings& s) {
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw InputError("kinect sensor: " + what);
+  };
+  require(s.exposure_s >= 0 && s.exposure_s < 1, "exposure_s must be in [0, 1) s");
+  require(s.readout_s >= 0 && s.readout_s < 1, "readout_s must be in [0, 1) s");
+  require(s.blur_step_px > 0, "blur_step_px must be positive");
+  require(s.max_subframes >= 1 && s.max_subframes <= 256, "max_subframes must be 1..256");
+  require(std::abs(s.depth_offset_s) < 1, "depth_offset_s must be within 1 s");
+  require(s.depth_drift > -0.5 && s.depth_drift < 0.5, "depth_drift must be within +-0.5");
+  require(s.depth_jitter_s >= 0 && s.depth_jitter_s < 0.01, "depth_jitter_s must be in [0, 0.01) s");
+  require(s.groundtruth_rate_hz >= 1 && s.groundtruth_rate_hz <= 10000,
+          "groundtruth_rate_hz must be 1..10000");
+  require(s.read_noise >= 0 && s.shot_gain >= 0 && s.exposure_drift >= 0,
+          "read_noise, shot_gain and exposure_drift must not be negative");
+  require(s.vignetting >= 0 && s.vignetting < 1, "vignetting must be in [0, 1)");
+  require(s.baseline_m > 0 && s.ir_focal_px > 0 && s.disparity_step_px > 0,
+          "baseline_m, ir_focal_px and disparity_step_px must be positive");
+  require(s.min_range_m >= 0 && s.max_range_m > s.min_range_m,
+          "need 0 <= min_range_m < max_range_m");
+  require(s.max_incidence_deg > 0 && s.max_incidence_deg <= 90, "max_incidence_deg must be 0..90");
+  require(s.dropout_probability >= 0 && s.dropout_probability <= 1 && s.edge_flying >= 0 &&
+              s.edge_missing >= 0 && s.edge_flying + s.edge_missing <= 1,
+          "dropout_probability, edge_flying and edge_missing are probabilities (the last two "
+          "summing to at most 1)");
+  require(s.edge_jump > 0, "edge_jump must be positive");
+  require(s.holes_per_frame >= 0, "holes_per_frame must not be negative");
+}
+
 void switch_effects(KinectSettings& settings, const std::string& list, bool on,
                     const std::string& option) {
   const auto& names = kinect_effect_names();

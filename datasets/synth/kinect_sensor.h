@@ -92,6 +92,9 @@ struct KinectSettings {
   double quantise_depth(double z) const;
 };
 
+// Throws InputError naming the first setting out of its range (times, rates, probabilities).
+void check_kinect_settings(const KinectSettings& settings);
+
 // Turns effects off by a comma-separated list of names ("motion_blur,rolling_shutter"), or on
 // with `on_list`. Throws InputError naming `option` and listing the valid names.
 void switch_effects(KinectSettings& settings, const std::string& list, bool on,

@@ -207,6 +207,7 @@ void check_spec(const SequenceSpec& spec) {
   if (spec.threads < 0)
     throw InputError("--threads: must be 0 (default) or positive, got " +
                      std::to_string(spec.threads));
+  if (spec.kinect) check_kinect_settings(*spec.kinect);
 }
 
 void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,

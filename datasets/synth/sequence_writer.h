@@ -38,7 +38,8 @@ Camera synthetic_camera();
 std::string frame_stamp_text(int i);
 double frame_stamp(int i);
 
-// Throws InputError naming the option at fault (preset-independent checks: frames, threads).
+// Throws InputError naming the option at fault (preset-independent checks: frames, threads,
+// the kinect settings).
 void check_spec(const SequenceSpec& spec);
 
 // Writes the whole sequence (frames rendered in parallel, identical for any thread count).

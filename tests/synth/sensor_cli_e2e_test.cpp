@@ -135,6 +135,21 @@ TEST(SensorCli, EffectsSwitchOnTheCommandLineAndLensDistortionReachesTheCalibrat
                                   test::temp_dir("ideal_switch").string(),
                               &output),
             2);
+  // A settings file: unknown keys and values out of range are bad input naming the problem.
+  const fs::path dir = test::temp_dir("sensor_settings");
+  for (const auto& [text, message] :
+       std::map<std::string, std::string>{{"exposure: 0.01\n", "unknown setting 'exposure'"},
+                                          {"groundtruth_rate_hz: 0\n", "groundtruth_rate_hz"},
+                                          {"effects: {blur: false}\n", "unknown sensor effect"}}) {
+    std::ofstream(dir / "kinect.yaml") << text;
+    EXPECT_EQ(test::run_slamkit("synth --frames 2 --sensor kinect --sensor-settings " +
+                                    (dir / "kinect.yaml").string() + " --out " +
+                                    (dir / "out").string(),
+                                &output),
+              2)
+        << text;
+    EXPECT_NE(output.find(message), std::string::npos) << output;
+  }
 }
 
 }  // namespace
