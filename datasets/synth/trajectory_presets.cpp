@@ -148,11 +148,12 @@ View jerk_view(double t, double whip) {
   return {eye, eye + Vector3d(-std::sin(yaw), std::cos(yaw), std::tan(kPitch))};
 }
 
+constexpr double kEaseBack = 2.5;  // seconds the jerk's whip takes to ease back
+
 double whip_weight(int i, int frames) {
   const int start = jerk_whip_frame(frames);
   if (i <= start) return 0;
   if (i == start + 1) return 0.5;
-  constexpr double kEaseBack = 2.5;  // seconds
   return 1 - smootherstep((i - start - 2) / kFrameRate / kEaseBack);
 }
 
@@ -163,7 +164,6 @@ double whip_weight_at(double t, int frames) {
   const double steps = t * kFrameRate - jerk_whip_frame(frames);
   if (steps <= 0) return 0;
   if (steps <= 2) return 0.5 * steps;
-  constexpr double kEaseBack = 2.5;  // seconds
   return 1 - smootherstep((steps - 2) / kFrameRate / kEaseBack);
 }
 

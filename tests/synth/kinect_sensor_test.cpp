@@ -334,6 +334,28 @@ TEST(KinectSensor, AutoExposureDriftsSmoothlyAndDisparityQuantisationGrowsWithZS
   EXPECT_NEAR(s.depth_step(1.0), 0.125 / (580 * 0.075), 1e-12);
 }
 
+TEST(KinectSensor, LensDistortionRaysLandOnTheirPixelsThroughTheCalibrationsDistortion) {
+  KinectSettings s = only({KinectEffect::kLensDistortion});
+  const Camera camera = small_camera();
+  const Camera distorted = kinect_colour_camera(camera, s);
+  EXPECT_DOUBLE_EQ(distorted.distortion.k1, s.k1);
+  const std::vector<Eigen::Vector3d> rays = colour_pixel_rays(camera, s);
+  // The reader undistorts with calibration.yaml's distortion: projecting each pixel's ray
+  // through it must give the pixel back; towards the corners the rays bend away from pinhole.
+  double max_bend = 0;
+  for (int v = 0; v < camera.height; v += 17)
+    for (int u = 0; u < camera.width; u += 17) {
+      const Eigen::Vector3d& ray = rays[size_t(v) * camera.width + u];
+      EXPECT_LT((distorted.project_distorted(ray) - Eigen::Vector2d(u, v)).norm(), 0.01) << u << "," << v;
+      max_bend = std::max(max_bend, (camera.project(ray) - Eigen::Vector2d(u, v)).norm());
+    }
+  EXPECT_GT(max_bend, 3.0);
+  // Off: pinhole rays and no distortion in the calibration.
+  s.on[size_t(KinectEffect::kLensDistortion)] = false;
+  EXPECT_TRUE(kinect_colour_camera(camera, s).distortion.is_zero());
+  EXPECT_NEAR(colour_pixel_rays(camera, s)[0].x(), -camera.cx / camera.fx, 1e-15);
+}
+
 TEST(KinectSensor, EffectsSwitchByNameAndUnknownNamesAreInputErrors) {
   KinectSettings s;
   EXPECT_FALSE(s.has(KinectEffect::kLensDistortion));
