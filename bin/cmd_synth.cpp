@@ -2,12 +2,15 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "bin/command.h"
 #include "bin/output_folder.h"
+#include "core/error.h"
 #include "core/progress.h"
 #include "datasets/synth/room_layout.h"
 #include "datasets/synth/sequence_writer.h"
+#include "io/yaml_file.h"
 
 namespace slamkit::cli {
 namespace {
@@ -18,7 +21,28 @@ struct SynthArgs {
   uint64_t seed = 1;
   int threads = 0;
   std::string out;
+  std::string sensor = "ideal";
+  std::string sensor_settings;  // YAML file of kinect settings
+  std::string sensor_off, sensor_on;
 };
+
+// The kinect sensor's settings: defaults, then the settings file, then the effect switches.
+std::optional<synth::KinectSettings> kinect_settings(const SynthArgs& args) {
+  if (args.sensor == "ideal") {
+    if (!args.sensor_settings.empty() || !args.sensor_off.empty() || !args.sensor_on.empty())
+      throw InputError("--sensor-settings, --sensor-off and --sensor-on need --sensor kinect");
+    return std::nullopt;
+  }
+  if (args.sensor != "kinect")
+    throw InputError("--sensor: unknown sensor '" + args.sensor + "' (ideal or kinect)");
+  synth::KinectSettings settings;
+  if (!args.sensor_settings.empty())
+    settings = synth::read_kinect_settings(
+        load_yaml_file(args.sensor_settings, "sensor settings"), args.sensor_settings);
+  synth::switch_effects(settings, args.sensor_off, false, "--sensor-off");
+  synth::switch_effects(settings, args.sensor_on, true, "--sensor-on");
+  return settings;
+}
 
 void run_synth(const SynthArgs& args) {
   check_output_folder("--out", args.out);
@@ -29,6 +53,7 @@ void run_synth(const SynthArgs& args) {
   spec.seed = args.seed;
   spec.threads = args.threads;
   spec.out = args.out;
+  spec.kinect = kinect_settings(args);
   synth::check_spec(spec);  // before the scene's textures are built: bad arguments fail at once
 
   const synth::SyntheticScene scene = synth::make_named_scene(synth::preset_scene(spec.preset));
@@ -36,9 +61,9 @@ void run_synth(const SynthArgs& args) {
   synth::write_sequence(scene, spec, [&progress](size_t done) { progress.update(done); });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("synth: %d frames of '%s' (seed %llu) in %.1f s -> %s\n", spec.frames,
-              args.preset.c_str(), static_cast<unsigned long long>(spec.seed), seconds,
-              spec.out.string().c_str());
+  std::printf("synth: %d frames of '%s' (seed %llu, %s sensor) in %.1f s -> %s\n", spec.frames,
+              args.preset.c_str(), static_cast<unsigned long long>(spec.seed),
+              args.sensor.c_str(), seconds, spec.out.string().c_str());
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {
@@ -53,6 +78,20 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Rendering threads (0 = all cores)")
       ->capture_default_str();
+  std::string effects;
+  for (const std::string& name : synth::kinect_effect_names())
+    effects += (effects.empty() ? "" : ", ") + name;
+  cmd->add_option("--sensor", args->sensor,
+                  "Sensor: ideal (exact stamps, no blur, Gaussian noise) or kinect (Kinect v1 "
+                  "effects, see docs/sensor.md)")
+      ->capture_default_str();
+  cmd->add_option("--sensor-off", args->sensor_off,
+                  "Kinect effects to turn off, comma-separated: " + effects);
+  cmd->add_option("--sensor-on", args->sensor_on,
+                  "Kinect effects to turn on (lens_distortion is off by default)");
+  cmd->add_option("--sensor-settings", args->sensor_settings,
+                  "YAML file of kinect settings, as synthetic.yaml's `kinect:` map (keys left "
+                  "out keep their defaults)");
   cmd->callback([args] { run_synth(*args); });
 });
 

@@ -49,6 +49,13 @@ enum RngStream : uint64_t {
   kStreamShake = 2,
   kStreamPixel = 3,
   kStreamDepthHoles = 4,
+  // The kinect sensor's (kinect_sensor.h):
+  kStreamDepthStamps = 5,
+  kStreamExposure = 6,
+  kStreamColourNoise = 7,
+  kStreamDepthNoise = 8,
+  kStreamDepthEdges = 9,
+  kStreamDepthLateral = 10,
 };
 
 }  // namespace slamkit::synth

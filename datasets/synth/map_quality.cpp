@@ -113,6 +113,11 @@ void write_synthetic_info(const fs::path& folder, const SequenceSpec& spec) {
   out << YAML::Key << "preset" << YAML::Value << preset_name(spec.preset);
   out << YAML::Key << "frames" << YAML::Value << spec.frames;
   out << YAML::Key << "seed" << YAML::Value << spec.seed;
+  if (spec.kinect) {
+    out << YAML::Key << "sensor" << YAML::Value << "kinect";
+    out << YAML::Key << "kinect" << YAML::Value;
+    emit_kinect_settings(out, *spec.kinect);
+  }
   out << YAML::EndMap;
   write_yaml_file(folder / kSyntheticInfoFile, out);
 }
@@ -131,6 +136,13 @@ std::optional<SyntheticInfo> read_synthetic_info(const fs::path& folder) {
     preset = node["preset"].as<std::string>();
     info.frames = node["frames"].as<int>();
     info.seed = node["seed"].as<uint64_t>();
+    const std::string sensor = node["sensor"] ? node["sensor"].as<std::string>() : "ideal";
+    if (sensor != "ideal" && sensor != "kinect")
+      throw_input_error(path.string(), node["sensor"].Mark().line + 1,
+                        "sensor: unknown sensor '" + sensor + "' (ideal or kinect)");
+    if (sensor == "kinect")
+      info.kinect = node["kinect"] ? read_kinect_settings(node["kinect"], path.string())
+                                   : KinectSettings();
   } catch (const YAML::Exception& e) {
     throw_input_error(path.string(), e.mark.line + 1, "YAML error: " + e.msg);
   }

@@ -19,6 +19,8 @@ namespace slamkit::synth {
 
 // synthetic.yaml in a sequence folder: the recipe that rebuilds the scene.
 //   scene: furnished_room   preset: desk   frames: 600   seed: 1
+// and for the kinect sensor also `sensor: kinect` and `kinect: {effects: ..., settings}`
+// (without them the sensor was the ideal one).
 inline constexpr const char* kSyntheticInfoFile = "synthetic.yaml";
 
 struct SyntheticInfo {
@@ -26,6 +28,7 @@ struct SyntheticInfo {
   Preset preset = Preset::kDesk;
   int frames = 0;
   uint64_t seed = 0;
+  std::optional<KinectSettings> kinect;  // nullopt: the ideal sensor
 };
 
 // Throws InputError naming the file when it cannot be written.

@@ -10,9 +10,11 @@
 
 #include "core/error.h"
 #include "core/trajectory.h"
+#include "datasets/synth/kinect_renderer.h"
 #include "datasets/synth/map_quality.h"
 #include "datasets/synth/renderer.h"
 #include "datasets/synth/revisits.h"
+#include "datasets/synth/sensor_streams.h"
 #include "io/camera_yaml.h"
 #include "io/png_file.h"
 #include "io/trajectory_io.h"
@@ -30,7 +32,8 @@ int64_t stamp_microseconds(int i) {
 
 std::string describe(const SequenceSpec& spec) {
   return "slamkit synth --preset " + preset_name(spec.preset) + " --frames " +
-         std::to_string(spec.frames) + " --seed " + std::to_string(spec.seed);
+         std::to_string(spec.frames) + " --seed " + std::to_string(spec.seed) +
+         (spec.kinect ? " --sensor kinect (settings in synthetic.yaml)" : "");
 }
 
 void create_folder(const fs::path& folder) {
@@ -83,6 +86,96 @@ void write_revisits(const fs::path& path, const std::vector<Eigen::Isometry3d>& 
   close_written(out, path);
 }
 
+// The kinect sensor's lists: rgb.txt and depth.txt with their own stamps, associate.txt as
+// associate.py would pair them.
+void write_stream_lists(const SequenceSpec& spec, const StreamStamps& stamps) {
+  const fs::path rgb_path = spec.out / "rgb.txt", depth_path = spec.out / "depth.txt";
+  const fs::path assoc_path = spec.out / "associate.txt";
+  std::ofstream rgb = open_for_writing(rgb_path), depth = open_for_writing(depth_path);
+  std::ofstream assoc = open_for_writing(assoc_path);
+  rgb << "# color images\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  depth << "# depth maps\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  for (int64_t us : stamps.colour) rgb << stamp_text(us) << " rgb/" << stamp_text(us) << ".png\n";
+  for (int64_t us : stamps.depth)
+    depth << stamp_text(us) << " depth/" << stamp_text(us) << ".png\n";
+  for (const auto& [c, d] : stamps.pairs) {
+    const std::string rgb_stamp = stamp_text(stamps.colour[c]);
+    const std::string depth_stamp = stamp_text(stamps.depth[d]);
+    assoc << rgb_stamp << " rgb/" << rgb_stamp << ".png " << depth_stamp << " depth/"
+          << depth_stamp << ".png\n";
+  }
+  close_written(rgb, rgb_path);
+  close_written(depth, depth_path);
+  close_written(assoc, assoc_path);
+}
+
+// Renders colour and depth frames (colour first, then depth, as one parallel loop); returns
+// the first file that could not be written, or "".
+std::string render_kinect_frames(const SyntheticScene& scene, const SequenceSpec& spec,
+                                 const ContinuousTrajectory& trajectory,
+                                 const StreamStamps& stamps,
+                                 const std::function<void(size_t)>& on_progress) {
+  const KinectSettings& settings = *spec.kinect;
+  const Camera camera = synthetic_camera();
+  const std::vector<Eigen::Vector3d> rays = colour_pixel_rays(camera, settings);
+  const PoseAt pose_at = [&trajectory](double t) { return trajectory.pose(t); };
+  const int colour_frames = int(stamps.colour.size());
+  const int jobs = colour_frames + int(stamps.depth.size());
+  std::atomic<size_t> done{0};
+  std::string failed;
+  const int threads = spec.threads > 0 ? spec.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int job = 0; job < jobs; ++job) {
+    const bool colour = job < colour_frames;
+    const int i = colour ? job : job - colour_frames;
+    const int64_t us = colour ? stamps.colour[i] : stamps.depth[i];
+    const double t = us / 1e6;
+    const fs::path path = spec.out / (colour ? "rgb" : "depth") / (stamp_text(us) + ".png");
+    try {  // exceptions must not escape an OpenMP region
+      if (colour) {
+        write_png(path, render_kinect_colour(scene, camera, rays, pose_at, settings, spec.seed,
+                                             uint64_t(i), t));
+      } else {
+        const Eigen::Isometry3d T_w_d = depth_camera_pose(trajectory.pose(t), settings);
+        write_png(path, render_kinect_depth(scene, camera, T_w_d, settings, spec.seed, uint64_t(i)));
+      }
+    } catch (const InputError& e) {
+#pragma omp critical(synth_failed)
+      if (failed.empty()) failed = e.what();
+    }
+    // Progress counts colour frames' worth of work: a depth frame is about half one.
+    ++done;
+    if (on_progress && omp_get_thread_num() == 0)
+      on_progress(size_t(done) * size_t(spec.frames) / size_t(jobs));
+  }
+  if (on_progress) on_progress(size_t(spec.frames));
+  return failed;
+}
+
+void write_kinect_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
+                           const std::function<void(size_t)>& on_progress) {
+  const KinectSettings& settings = *spec.kinect;
+  const ContinuousTrajectory trajectory(spec.preset, spec.frames, spec.seed);
+  const StreamStamps stamps = make_stream_stamps(settings, spec.frames, spec.seed);
+  const std::string failed = render_kinect_frames(scene, spec, trajectory, stamps, on_progress);
+  if (!failed.empty()) throw InputError(failed);
+
+  write_stream_lists(spec, stamps);
+  Trajectory groundtruth;
+  for (int64_t us : stamps.groundtruth)
+    groundtruth.push_back(stamp_seconds(us), trajectory.pose(us / 1e6));
+  write_tum_trajectory(
+      spec.out / "groundtruth.txt", groundtruth,
+      "ground truth trajectory (exact, T_w_c of the colour camera)\n# file: '" + describe(spec) +
+          "'");
+  std::vector<Eigen::Isometry3d> frame_poses;
+  for (int64_t us : stamps.colour) frame_poses.push_back(trajectory.pose(us / 1e6));
+  write_revisits(spec.out / "revisits.txt", frame_poses);
+  write_camera_yaml(spec.out / "calibration.yaml",
+                    kinect_colour_camera(synthetic_camera(), settings));
+  write_synthetic_info(spec.out, spec);
+}
+
 }  // namespace
 
 Camera synthetic_camera() {
@@ -114,6 +207,7 @@ void check_spec(const SequenceSpec& spec) {
   if (spec.threads < 0)
     throw InputError("--threads: must be 0 (default) or positive, got " +
                      std::to_string(spec.threads));
+  if (spec.kinect) check_kinect_settings(*spec.kinect);
 }
 
 void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
@@ -122,9 +216,10 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
   if (scene.description().name != preset_scene(spec.preset))
     throw std::invalid_argument("write_sequence: preset " + preset_name(spec.preset) + " films " +
                                 preset_scene(spec.preset) + ", not " + scene.description().name);
-  const std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
   create_folder(spec.out / "rgb");
   create_folder(spec.out / "depth");
+  if (spec.kinect) return write_kinect_sequence(scene, spec, on_progress);
+  const std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
   const Camera camera = synthetic_camera();
 
   std::atomic<size_t> done{0};

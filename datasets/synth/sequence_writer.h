@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "core/camera.h"
+#include "datasets/synth/kinect_sensor.h"
 #include "datasets/synth/scene.h"
 #include "datasets/synth/sensor_model.h"
 #include "datasets/synth/trajectory_presets.h"
@@ -21,7 +23,10 @@ struct SequenceSpec {
   uint64_t seed = 1;
   int threads = 0;  // OpenMP threads rendering frames; 0 = OpenMP's default
   std::filesystem::path out;
-  SensorModel sensor;
+  SensorModel sensor;  // the ideal sensor's noise
+  // The kinect sensor instead (--sensor kinect): blur, rolling shutter, depth on its own clock
+  // (depth.txt's stamps differ from rgb.txt's, groundtruth.txt at 100 Hz), docs/sensor.md.
+  std::optional<KinectSettings> kinect;
 };
 
 // Freiburg-like pinhole camera without distortion: fx = fy = 525, cx 319.5, cy 239.5,
@@ -33,7 +38,8 @@ Camera synthetic_camera();
 std::string frame_stamp_text(int i);
 double frame_stamp(int i);
 
-// Throws InputError naming the option at fault (preset-independent checks: frames, threads).
+// Throws InputError naming the option at fault (preset-independent checks: frames, threads,
+// the kinect settings).
 void check_spec(const SequenceSpec& spec);
 
 // Writes the whole sequence (frames rendered in parallel, identical for any thread count).

@@ -67,6 +67,7 @@ Eigen::Isometry3d keyed_pose(const std::vector<Key>& keys, double phase) {
   auto next = std::upper_bound(keys.begin(), keys.end(), phase,
                                [](double p, const Key& k) { return p < k.phase; });
   if (next == keys.end()) --next;
+  if (next == keys.begin()) ++next;  // a phase before the first key (sensors sampling at t < 0)
   const Key& prev = *(next - 1);
   const double w = smootherstep((phase - prev.phase) / (next->phase - prev.phase));
   const Eigen::Quaterniond q0(look_at(prev.eye, prev.target).linear());
@@ -147,34 +148,58 @@ View jerk_view(double t, double whip) {
   return {eye, eye + Vector3d(-std::sin(yaw), std::cos(yaw), std::tan(kPitch))};
 }
 
+constexpr double kEaseBack = 2.5;  // seconds the jerk's whip takes to ease back
+
 double whip_weight(int i, int frames) {
   const int start = jerk_whip_frame(frames);
   if (i <= start) return 0;
   if (i == start + 1) return 0.5;
-  constexpr double kEaseBack = 2.5;  // seconds
   return 1 - smootherstep((i - start - 2) / kFrameRate / kEaseBack);
+}
+
+// The whip between frames, for sensors sampling there: linear through the two whip steps (0,
+// 0.5, 1 at frames start, start + 1, start + 2), then the same ease back; equal to
+// whip_weight at frame times.
+double whip_weight_at(double t, int frames) {
+  const double steps = t * kFrameRate - jerk_whip_frame(frames);
+  if (steps <= 0) return 0;
+  if (steps <= 2) return 0.5 * steps;
+  return 1 - smootherstep((steps - 2) / kFrameRate / kEaseBack);
 }
 
 // The loop's last frame wraps round to phase 0: it closes on exactly the first pose.
 double loop_phase(int i, int frames) { return i == frames - 1 ? 0.0 : double(i) / (frames - 1); }
 
-Eigen::Isometry3d scripted_pose(Preset preset, int i, int frames) {
-  const double t = i / kFrameRate;
+// The scripted pose at time t (seconds), phase (0..1 over the sequence) and whip weight (jerk).
+Eigen::Isometry3d scripted_pose(Preset preset, double t, double phase, double whip) {
   switch (preset) {
     case Preset::kDesk:
       return pose_of(desk_view(t));
     case Preset::kLoop:
-      return pose_of(loop_view(loop_phase(i, frames)));
+      return pose_of(loop_view(phase));
     case Preset::kLowTexture:
-      return low_texture_pose(double(i) / (frames - 1));
+      return low_texture_pose(phase);
     case Preset::kLong:
-      return long_pose(double(i) / (frames - 1));
+      return long_pose(phase);
     case Preset::kLookalike:
-      return lookalike_pose(double(i) / (frames - 1));
+      return lookalike_pose(phase);
     case Preset::kJerk:
-      return pose_of(jerk_view(t, whip_weight(i, frames)));
+      return pose_of(jerk_view(t, whip));
   }
   throw std::logic_error("unknown preset");
+}
+
+// Per frame: the loop's phase wraps at the last frame, the others' is i / (frames - 1).
+Eigen::Isometry3d scripted_pose(Preset preset, int i, int frames) {
+  const double phase = preset == Preset::kLoop ? loop_phase(i, frames) : double(i) / (frames - 1);
+  return scripted_pose(preset, i / kFrameRate, phase, whip_weight(i, frames));
+}
+
+HandShake make_shake(Preset preset, int frames, uint64_t seed) {
+  // The loop's shake repeats over the loop, so that the last pose is the first one.
+  const double duration = (frames - 1) / kFrameRate;
+  return HandShake(seed, kShakeTranslation, kShakeRotation,
+                   preset == Preset::kLoop ? duration : 0.0);
 }
 
 }  // namespace
@@ -222,15 +247,25 @@ std::vector<Eigen::Isometry3d> make_trajectory(Preset preset, int frames, uint64
   if (frames < 2)
     throw InputError("--frames: need at least 2 frames, got " + std::to_string(frames));
   const double duration = (frames - 1) / kFrameRate;
-  // The loop's shake repeats over the loop, so that the last pose is the first one.
   const bool loop = preset == Preset::kLoop;
-  const HandShake shake(seed, kShakeTranslation, kShakeRotation, loop ? duration : 0.0);
+  const HandShake shake = make_shake(preset, frames, seed);
   std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < frames; ++i) {
     const double t = loop ? loop_phase(i, frames) * duration : i / kFrameRate;
     poses.push_back(scripted_pose(preset, i, frames) * shake.offset(t));
   }
   return poses;
+}
+
+ContinuousTrajectory::ContinuousTrajectory(Preset preset, int frames, uint64_t seed)
+    : preset_(preset), frames_(frames), shake_(make_shake(preset, frames, seed)) {
+  if (frames < 2)
+    throw InputError("--frames: need at least 2 frames, got " + std::to_string(frames));
+}
+
+Eigen::Isometry3d ContinuousTrajectory::pose(double t) const {
+  const double phase = t / ((frames_ - 1) / kFrameRate);
+  return scripted_pose(preset_, t, phase, whip_weight_at(t, frames_)) * shake_.offset(t);
 }
 
 }  // namespace slamkit::synth

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "datasets/synth/hand_shake.h"
+
 namespace slamkit::synth {
 
 enum class Preset {
@@ -34,6 +36,22 @@ std::string preset_scene(Preset preset);
 // longer sequence covers more of the same motion); the others stretch their script over the
 // frames. The seed drives the hand shake. Throws InputError if frames < 2.
 std::vector<Eigen::Isometry3d> make_trajectory(Preset preset, int frames, uint64_t seed);
+
+// The same path at any time t (seconds; frame i is at i / kFrameRate), for sensors that sample
+// between frames (rolling shutter, exposure, a depth stream of its own). At frame times it
+// agrees with make_trajectory to rounding; the loop and the scripted presets run on past the
+// last frame time (phases above 1 hold the last key, the loop goes round again).
+class ContinuousTrajectory {
+ public:
+  // Throws InputError if frames < 2.
+  ContinuousTrajectory(Preset preset, int frames, uint64_t seed);
+  Eigen::Isometry3d pose(double t) const;
+
+ private:
+  Preset preset_;
+  int frames_;
+  HandShake shake_;
+};
 
 // Camera at `eye` looking at `target`, its image upright in a z-up world.
 Eigen::Isometry3d look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);

@@ -59,7 +59,7 @@ void write_atomically(const fs::path& file, const std::string& text) {
 std::string sequence_key(const SequenceSource& s) {
   if (s.kind == SequenceSource::Kind::kSynthetic)
     return "synthetic_" + s.preset + "_" + std::to_string(s.frames) + "_seed" +
-           std::to_string(s.seed);
+           std::to_string(s.seed) + (s.sensor == "ideal" ? "" : "_" + s.sensor);
   return s.folder.string();
 }
 
@@ -92,7 +92,8 @@ void render_synthetic(SequenceJob& job, const RunnerOptions& options, int thread
   const int code = run_logged(
       options.slamkit.string(),
       {"synth", "--preset", s.preset, "--frames", std::to_string(s.frames), "--seed",
-       std::to_string(s.seed), "--threads", std::to_string(threads), "--out", temp.string()},
+       std::to_string(s.seed), "--sensor", s.sensor, "--threads", std::to_string(threads),
+       "--out", temp.string()},
       log);
   if (code != 0) {
     job.error =

@@ -111,8 +111,8 @@ class SuiteReader : YamlChecks {
     } else {
       const YAML::Node synth = node["synthetic"];
       s.kind = SequenceSource::Kind::kSynthetic;
-      if (!synth.IsMap()) fail(synth, "synthetic must be a map {preset, frames, seed}");
-      check_keys(synth, {"preset", "frames", "seed"});
+      if (!synth.IsMap()) fail(synth, "synthetic must be a map {preset, frames, seed, sensor}");
+      check_keys(synth, {"preset", "frames", "seed", "sensor"});
       if (!synth["preset"] || !synth["frames"]) fail(synth, "synthetic needs preset and frames");
       s.preset = scalar(synth["preset"], "preset");
       const auto& presets = context_.presets;
@@ -124,6 +124,11 @@ class SuiteReader : YamlChecks {
       s.frames = integer(synth["frames"], "frames");
       if (s.frames < 2) fail(synth["frames"], "frames must be at least 2");
       if (synth["seed"]) s.seed = uint64_t(integer(synth["seed"], "seed"));
+      if (synth["sensor"]) {
+        s.sensor = scalar(synth["sensor"], "sensor");
+        if (s.sensor != "ideal" && s.sensor != "kinect")
+          fail(synth["sensor"], "unknown sensor '" + s.sensor + "' (ideal or kinect)");
+      }
     }
     if (node["depth_scale"]) {
       s.depth_scale = number(node["depth_scale"], "depth_scale");
@@ -199,7 +204,7 @@ std::string SequenceSource::describe() const {
       break;
     case Kind::kSynthetic:
       text = "synthetic " + preset + ", " + std::to_string(frames) + " frames, seed " +
-             std::to_string(seed);
+             std::to_string(seed) + (sensor == "ideal" ? "" : ", " + sensor + " sensor");
       break;
   }
   if (depth_scale) {

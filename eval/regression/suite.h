@@ -31,6 +31,7 @@ struct SequenceSource {
   std::string preset;            // kSynthetic
   int frames = 0;
   uint64_t seed = 1;
+  std::string sensor = "ideal";  // kSynthetic: `slamkit synth --sensor` (ideal or kinect)
   std::optional<double> depth_scale;
   std::filesystem::path calibration;  // empty: the sequence's own
 

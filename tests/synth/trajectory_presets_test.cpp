@@ -138,5 +138,28 @@ TEST(TrajectoryPresets, BadArgumentsAreInputErrors) {
   EXPECT_EQ(preset_name(parse_preset("lowtexture")), "lowtexture");
 }
 
+TEST(ContinuousTrajectory, AgreesWithTheFramesAtFrameTimesAndMovesSmoothlyBetween) {
+  for (const std::string& name : preset_names()) {
+    const Preset preset = parse_preset(name);
+    const int frames = 90;
+    const std::vector<Eigen::Isometry3d> poses = make_trajectory(preset, frames, 3);
+    const ContinuousTrajectory trajectory(preset, frames, 3);
+    for (int i = 0; i < frames; ++i) {
+      const Eigen::Isometry3d delta = poses[i].inverse() * trajectory.pose(i / kFrameRate);
+      EXPECT_LT(delta.translation().norm(), 1e-9) << name << " frame " << i;
+      EXPECT_LT(rotation_angle(delta), 1e-9) << name << " frame " << i;
+    }
+    // Half-way between two frames the pose lies between theirs; jerk's whip included.
+    for (int i = 0; i + 1 < frames; ++i) {
+      const Eigen::Isometry3d mid = trajectory.pose((i + 0.5) / kFrameRate);
+      const double step = (poses[i].translation() - poses[i + 1].translation()).norm();
+      EXPECT_LE((mid.translation() - poses[i].translation()).norm(), step + 1e-6)
+          << name << " frame " << i;
+    }
+    // Sensors sample before the first frame (a depth stream ahead of the colour one).
+    EXPECT_TRUE(trajectory.pose(-0.02).matrix().allFinite()) << name;
+  }
+}
+
 }  // namespace
 }  // namespace slamkit::synth
