@@ -73,7 +73,8 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
         settings.map.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
   if (result.fusion.beyond_grid > 0)
     std::fprintf(stderr,
-                 "warning: %zu map points lie over 2^20 voxels (10 km at 1 cm) from the origin and were left "
+                 "warning: %zu map points lie over 2^20 voxels (10 km at 1 cm) from the origin and "
+                 "were left "
                  "out of map.ply (a trajectory that flew off?)\n",
                  result.fusion.beyond_grid);
   if (seq.groundtruth() && settings.pipeline.evaluate)
@@ -87,10 +88,10 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
       t.prepare, t.track, t.local_ba, t.loops, t.global_ba, t.fusion, t.write, t.total,
       double(result.frames.size()) / t.total);
   const StageTimes& cpu = result.cpu_seconds;
-  std::printf("CPU         track %.2f s (with preparation and local BA), loops %.2f, global BA "
-              "%.2f, fusion %.2f, write %.2f; total %.2f s; peak memory %.0f MB\n",
-              cpu.track, cpu.loops, cpu.global_ba, cpu.fusion, cpu.write, cpu.total,
-              result.peak_rss_mb);
+  std::printf(
+      "CPU         track %.2f s (with preparation and local BA), loops %.2f, global BA "
+      "%.2f, fusion %.2f, write %.2f; total %.2f s; peak memory %.0f MB\n",
+      cpu.track, cpu.loops, cpu.global_ba, cpu.fusion, cpu.write, cpu.total, result.peak_rss_mb);
 }
 
 void run(const RunArgs& args) {

@@ -128,8 +128,8 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
                     beyond_grid[size_t(i)]);
         } else {
           const RgbdFrame frame = sequence.load(f.index);
-          bin_frame(sample_for_fusion(frame.rgb, frame.depth, settings.pixel_stride), grid,
-                    f.T_w_c, settings.max_depth, voxels, points, beyond_grid[size_t(i)]);
+          bin_frame(sample_for_fusion(frame.rgb, frame.depth, settings.pixel_stride), grid, f.T_w_c,
+                    settings.max_depth, voxels, points, beyond_grid[size_t(i)]);
         }
       } catch (const std::exception& e) {
         errors[size_t(i)] = e.what();

@@ -45,9 +45,9 @@ struct FusionReport {
 // at a time in parallel) into a voxel grid of settings.voxel_size that keeps each voxel's sums
 // (voxel_map.h), so memory grows with the voxels, not the frames (each frame's samples are
 // released once binned); then takes every voxel's
-// centroid and mean colour, leaves out voxels with few occupied neighbours, and writes `ply_path` (binary unless
-// !settings.binary_ply). The output is the same at any thread count. progress(done, total) is
-// called on the calling thread.
+// centroid and mean colour, leaves out voxels with few occupied neighbours, and writes `ply_path`
+// (binary unless !settings.binary_ply). The output is the same at any thread count. progress(done,
+// total) is called on the calling thread.
 //
 // Every settings.pixel_stride-th raw pixel (u, v) is undistorted once for the whole grid
 // (the depth is registered to colour in the raw lens geometry), so a point is

@@ -273,9 +273,8 @@ void write_timing_json(const fs::path& dir, const std::string& sequence_name,
   json["threads"] = result.threads;
   json["seconds"] = stage_seconds_json(t);
   const StageTimes& cpu = result.cpu_seconds;
-  json["cpu_seconds"] = {{"track", cpu.track},         {"loops", cpu.loops},
-                         {"global_ba", cpu.global_ba}, {"fusion", cpu.fusion},
-                         {"write", cpu.write},         {"total", cpu.total}};
+  json["cpu_seconds"] = {{"track", cpu.track},   {"loops", cpu.loops}, {"global_ba", cpu.global_ba},
+                         {"fusion", cpu.fusion}, {"write", cpu.write}, {"total", cpu.total}};
   json["peak_rss_mb"] = result.peak_rss_mb;
   json["frames_per_second"] = timing.frames_per_second;
   json["tracking_median_ms"] = timing.tracking_median_ms;

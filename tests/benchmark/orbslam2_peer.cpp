@@ -11,17 +11,17 @@ namespace {
 
 void write_settings(const TumSequence& sequence, const fs::path& path) {
   const Camera& c = sequence.camera();
-  const double fps =
-      sequence.size() > 1 && sequence.duration() > 0 ? (sequence.size() - 1) / sequence.duration()
-                                                     : 30.0;
+  const double fps = sequence.size() > 1 && sequence.duration() > 0
+                         ? (sequence.size() - 1) / sequence.duration()
+                         : 30.0;
   std::ofstream out(path);
   out << std::setprecision(17) << "%YAML:1.0\n"
       << "Camera.fx: " << c.fx << "\nCamera.fy: " << c.fy << "\nCamera.cx: " << c.cx
       << "\nCamera.cy: " << c.cy << "\nCamera.k1: " << c.distortion.k1
       << "\nCamera.k2: " << c.distortion.k2 << "\nCamera.p1: " << c.distortion.p1
       << "\nCamera.p2: " << c.distortion.p2 << "\nCamera.k3: " << c.distortion.k3
-      << "\nCamera.width: " << c.width << "\nCamera.height: " << c.height
-      << "\nCamera.fps: " << fps << "\nCamera.bf: " << c.fx * 40.0 / 517.306408
+      << "\nCamera.width: " << c.width << "\nCamera.height: " << c.height << "\nCamera.fps: " << fps
+      << "\nCamera.bf: " << c.fx * 40.0 / 517.306408
       << "\nCamera.RGB: 1\nThDepth: 40.0\nDepthMapFactor: " << c.depth_scale
       << "\nORBextractor.nFeatures: 1000\nORBextractor.scaleFactor: 1.2\n"
          "ORBextractor.nLevels: 8\nORBextractor.iniThFAST: 20\nORBextractor.minThFAST: 7\n";
@@ -44,8 +44,7 @@ void write_association(const TumSequence& sequence, const fs::path& path) {
 size_t count_poses(const fs::path& trajectory) {
   std::ifstream in(trajectory);
   size_t poses = 0;
-  for (std::string line; std::getline(in, line);)
-    poses += !line.empty() && line[0] != '#';
+  for (std::string line; std::getline(in, line);) poses += !line.empty() && line[0] != '#';
   return poses;
 }
 
@@ -57,10 +56,10 @@ PeerRun run_orbslam2(const OrbSlam2& peer, const TumSequence& sequence, const fs
   write_settings(sequence, work_dir / "settings.yaml");
   write_association(sequence, work_dir / "associate.txt");
   PeerRun run;
-  run.usage = run_child({peer.rgbd_tum.string(), peer.vocabulary.string(),
-                         (work_dir / "settings.yaml").string(), sequence.folder().string(),
-                         (work_dir / "associate.txt").string()},
-                        work_dir / "log.txt", work_dir, {"ORBSLAM2_NO_PACING=1"});
+  run.usage = run_child(
+      {peer.rgbd_tum.string(), peer.vocabulary.string(), (work_dir / "settings.yaml").string(),
+       sequence.folder().string(), (work_dir / "associate.txt").string()},
+      work_dir / "log.txt", work_dir, {"ORBSLAM2_NO_PACING=1"});
   run.poses = count_poses(work_dir / "CameraTrajectory.txt");
   return run;
 }

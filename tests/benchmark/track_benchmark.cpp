@@ -27,9 +27,9 @@
 #include "core/stopwatch.h"
 #include "datasets/synth/room_layout.h"
 #include "datasets/synth/sequence_writer.h"
+#include "orbslam2_peer.h"
 #include "pipeline/batch_engine.h"
 #include "pipeline/run_output.h"
-#include "orbslam2_peer.h"
 #include "pipeline/run_pipeline.h"
 
 namespace fs = std::filesystem;
@@ -61,10 +61,11 @@ void report_front_end(const std::string& name, const TumSequence& sequence, int 
     std::printf("  %-12s %7.2fms %7.2fms %7.2fms\n", s.name.c_str(), s.median_ms, s.mean_ms,
                 s.max_ms);
   std::printf("  tracking (all after decode) median %.2f ms/frame\n", timing.tracking_median_ms);
-  std::printf("  wall: prepare %.2f s (parallel, beside tracking), track %.2f s; %.2f s in all "
-              "-> %.1f frames/s; CPU %.2f s\n",
-              result.seconds.prepare, result.seconds.track, result.seconds.total,
-              timing.frames_per_second, cpu_seconds);
+  std::printf(
+      "  wall: prepare %.2f s (parallel, beside tracking), track %.2f s; %.2f s in all "
+      "-> %.1f frames/s; CPU %.2f s\n",
+      result.seconds.prepare, result.seconds.track, result.seconds.total, timing.frames_per_second,
+      cpu_seconds);
   const double floor_ms = decode_floor_ms(sequence, result.threads);
   const double end_to_end_ms = 1000 * result.seconds.total / double(result.frames.size());
   std::printf(
@@ -88,7 +89,7 @@ struct Median {
 void report_pipeline(const std::string& name, const TumSequence& sequence, int threads, int runs,
                      const std::optional<bench::OrbSlam2>& peer) {
   const fs::path work = fs::temp_directory_path() / "slamkit_benchmark_run";
-  const std::vector<std::string> stages = {"track", "loops",  "global_ba",
+  const std::vector<std::string> stages = {"track",  "loops", "global_ba",
                                            "fusion", "write", "total"};
   Median wall, cpu, rss, orb_wall, orb_cpu, orb_rss, orb_poses;
   std::map<std::string, Median> stage_wall, stage_cpu;
@@ -122,17 +123,17 @@ void report_pipeline(const std::string& name, const TumSequence& sequence, int t
     orb_rss.values.push_back(orb.usage.peak_rss_mb);
     orb_poses.values.push_back(double(orb.poses));
   }
-  std::printf("\n%s, whole pipeline (run --no-eval, a fresh process each time, median of %d): "
-              "%zu frames, %d keyframes, %s thread(s)\n",
-              name.c_str(), runs, sequence.size(), timing["keyframes"].get<int>(),
-              threads ? std::to_string(threads).c_str() : "all");
+  std::printf(
+      "\n%s, whole pipeline (run --no-eval, a fresh process each time, median of %d): "
+      "%zu frames, %d keyframes, %s thread(s)\n",
+      name.c_str(), runs, sequence.size(), timing["keyframes"].get<int>(),
+      threads ? std::to_string(threads).c_str() : "all");
   std::printf("  %-10s %8s %8s\n", "stage", "wall s", "CPU s");
   for (const std::string& s : stages)
     std::printf("  %-10s %8.2f %8.2f%s\n", s.c_str(), stage_wall[s](), stage_cpu[s](),
                 s == "track" ? "  (with preparation and local BA beside it)" : "");
   std::printf("  %-10s %8.2f %8.2f  (with start and exit) peak memory %.0f MB, %.1f frames/s\n",
-              "process", wall(),
-              cpu(), rss(), double(sequence.size()) / wall());
+              "process", wall(), cpu(), rss(), double(sequence.size()) / wall());
   if (!peer) return;
   std::printf("  ORB-SLAM2  %8.2f %8.2f  peak memory %.0f MB, tracked %.0f of %zu frames\n",
               orb_wall(), orb_cpu(), orb_rss(), orb_poses(), sequence.size());
@@ -176,12 +177,18 @@ Options parse_options(int argc, char** argv) {
       if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--threads") options.threads = std::stoi(value());
-    else if (arg == "--runs") options.runs = std::max(1, std::stoi(value()));
-    else if (arg == "--orbslam2") rgbd_tum = value();
-    else if (arg == "--vocabulary") vocabulary = value();
-    else if (arg.rfind("--", 0) == 0) throw std::runtime_error("unknown option " + arg);
-    else options.sequences.push_back(arg);
+    if (arg == "--threads")
+      options.threads = std::stoi(value());
+    else if (arg == "--runs")
+      options.runs = std::max(1, std::stoi(value()));
+    else if (arg == "--orbslam2")
+      rgbd_tum = value();
+    else if (arg == "--vocabulary")
+      vocabulary = value();
+    else if (arg.rfind("--", 0) == 0)
+      throw std::runtime_error("unknown option " + arg);
+    else
+      options.sequences.push_back(arg);
   }
   if (rgbd_tum.has_value() != vocabulary.has_value())
     throw std::runtime_error("--orbslam2 RGBD_TUM and --vocabulary VOC go together");

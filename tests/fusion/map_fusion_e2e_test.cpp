@@ -1,5 +1,3 @@
-#include "fusion/map_fusion.h"
-
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <unistd.h>
@@ -13,6 +11,7 @@
 #include "core/error.h"
 #include "datasets/synth/map_quality.h"
 #include "datasets/synth/sequence_writer.h"
+#include "fusion/map_fusion.h"
 #include "fusion/ply_cloud.h"
 #include "ply_reader.h"
 #include "support/test_data.h"
@@ -161,8 +160,8 @@ TEST(MapFusion, GroundtruthPosesGiveAnAccurateAndCompleteMap) {
       "outliers\naccuracy mean %.4f median %.4f p95 %.4f max %.4f m; "
       "completeness %.3f of %zu samples\n",
       report.frames, report.seconds, report.raw_points, report.after_voxel_grid,
-      report.after_outlier_removal, q.accuracy_mean, q.accuracy_median,
-      q.accuracy_p95, q.accuracy_max, q.completeness, q.surface_samples);
+      report.after_outlier_removal, q.accuracy_mean, q.accuracy_median, q.accuracy_p95,
+      q.accuracy_max, q.completeness, q.surface_samples);
   EXPECT_EQ(q.map_points, report.after_outlier_removal);
   EXPECT_LT(q.accuracy_median, 0.01);
   // Most points lie far off, where single-frame depth noise is 8-14 mm (2.5-3 m).

@@ -15,8 +15,9 @@ std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> scattered_points(size_t count
   std::uniform_int_distribution<int> channel(0, 255);
   std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> points;
   for (size_t i = 0; i < count; ++i)
-    points.push_back({{coordinate(rng), coordinate(rng), coordinate(rng)},
-                      cv::Vec3b(uint8_t(channel(rng)), uint8_t(channel(rng)), uint8_t(channel(rng)))});
+    points.push_back(
+        {{coordinate(rng), coordinate(rng), coordinate(rng)},
+         cv::Vec3b(uint8_t(channel(rng)), uint8_t(channel(rng)), uint8_t(channel(rng)))});
   return points;
 }
 
@@ -74,9 +75,10 @@ TEST(VoxelMap, IsolatedVoxelsAreLeftOutAndASurfaceKept) {
   const float leaf = 0.01f;
   std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> points;
   for (int u = 0; u < 20; ++u)  // a 20 x 20 voxel patch of the plane z = 0.005
-    for (int v = 0; v < 20; ++v) points.push_back({{0.005f + u * leaf, 0.005f + v * leaf, 0.005f}, {}});
-  points.push_back({{0.5f, 0.5f, 0.5f}, {}});          // a speck of noise, far off
-  points.push_back({{0.105f, 0.105f, 0.035f}, {}});    // two voxels off the plane: no neighbour
+    for (int v = 0; v < 20; ++v)
+      points.push_back({{0.005f + u * leaf, 0.005f + v * leaf, 0.005f}, {}});
+  points.push_back({{0.5f, 0.5f, 0.5f}, {}});        // a speck of noise, far off
+  points.push_back({{0.105f, 0.105f, 0.035f}, {}});  // two voxels off the plane: no neighbour
   EXPECT_EQ(fill(points, leaf, 2, 0).size(), 402u);
   // Inside the patch a voxel has 8 neighbours (the median), on its edge 5, at its corners 3.
   EXPECT_EQ(fill(points, leaf, 2, 0.3).size(), 400u);       // fewer than 2.4 -> 2
@@ -87,14 +89,15 @@ TEST(VoxelMap, IsolatedVoxelsAreLeftOutAndASurfaceKept) {
   // neighbour, so none is left out.
   std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> sparse;
   for (int u = 0; u < 20; u += 2)
-    for (int v = 0; v < 20; v += 2) sparse.push_back({{0.005f + u * leaf, 0.005f + v * leaf, 0.005f}, {}});
+    for (int v = 0; v < 20; v += 2)
+      sparse.push_back({{0.005f + u * leaf, 0.005f + v * leaf, 0.005f}, {}});
   EXPECT_EQ(fill(sparse, leaf, 2, 0.3).size(), 100u);
 }
 
 TEST(VoxelMap, PointsBeyondTheKeysRangeAreRefused) {
   const VoxelMap voxels(0.01f, 1);
   BinnedPoint b;
-  EXPECT_TRUE(voxels.bin({10000.0f, -10000.0f, 0}, {}, b));   // 10 km: 10^6 voxels, within 2^20
+  EXPECT_TRUE(voxels.bin({10000.0f, -10000.0f, 0}, {}, b));  // 10 km: 10^6 voxels, within 2^20
   EXPECT_FALSE(voxels.bin({20000.0f, 0, 0}, {}, b));
   EXPECT_FALSE(voxels.bin({0, 0, -20000.0f}, {}, b));
 }
