@@ -141,9 +141,11 @@ TEST(Run, CulledKeyframesStillPlaceTheirFramesSameWithOneAndTwoThreads) {
   for (const char* file : {"trajectory.txt", "keyframes.txt", "map.ply"})
     EXPECT_EQ(test::file_text(dir / "1" / file), test::file_text(dir / "2" / file)) << file;
 
-  // Tracking keeps the fusion samples of the keyframes that stay, and of no culled one.
+  // With a cache for them, tracking keeps the fusion samples of the keyframes that stay, and of
+  // no culled one.
   Settings settings;
   settings.mapping.cull_keyframes = true;
+  settings.map.keyframe_cache_mb = 1024;
   const RunResult tracked = track_sequence(seq, settings);
   ASSERT_EQ(tracked.keyframe_samples.size(), tracked.map.keyframes().size());
   EXPECT_EQ(tracked.map.num_culled_keyframes(), culled);
