@@ -203,6 +203,7 @@ Options parse_options(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time, also into a file
   const Options options = parse_options(argc, argv);
   if (!options.sequences.empty()) {
     for (const std::string& arg : options.sequences) {
