@@ -5,8 +5,12 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <stdexcept>
+#include <string>
+#include <thread>
 
 extern char** environ;
 
@@ -34,14 +38,22 @@ ChildUsage run_child(const std::vector<std::string>& argv, const std::filesystem
   const int error = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), env.data());
   posix_spawn_file_actions_destroy(&actions);
   if (error != 0) throw std::runtime_error("cannot start " + argv[0]);
+  // The peak is the child's VmHWM, read every 20 ms until it exits: rusage's ru_maxrss would
+  // start at this (larger) process's resident memory, which Linux carries over at exec.
   int status = 0;
   rusage usage{};
-  wait4(pid, &status, 0, &usage);
   ChildUsage result;
+  const std::string status_file = "/proc/" + std::to_string(pid) + "/status";
+  while (wait4(pid, &status, WNOHANG, &usage) == 0) {
+    std::ifstream in(status_file);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("VmHWM:", 0) == 0)
+        result.peak_rss_mb = std::max(result.peak_rss_mb, std::stod(line.substr(6)) / 1024.0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto seconds = [](const timeval& t) { return double(t.tv_sec) + t.tv_usec / 1e6; };
   result.cpu_s = seconds(usage.ru_utime) + seconds(usage.ru_stime);
-  result.peak_rss_mb = double(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
 }

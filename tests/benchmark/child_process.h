@@ -1,7 +1,8 @@
 #pragma once
-// Runs a program as a child process and measures it as /usr/bin/time does: wall time, CPU time
-// (user + system, all threads) and peak resident memory, from wait4's rusage. The benchmark
-// measures slamkit and ORB-SLAM2 this same way, each in a fresh process.
+// Runs a program as a child process and measures it: wall time, CPU time (user + system, all
+// threads, wait4's rusage) and peak resident memory (its VmHWM, read every 20 ms; a peak in
+// its last 20 ms could be missed). The benchmark measures slamkit and ORB-SLAM2 this same way,
+// each in a fresh process.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,7 +13,7 @@ struct ChildUsage {
   int exit_code = -1;
   double wall_s = 0;
   double cpu_s = 0;
-  double peak_rss_mb = 0;
+  double peak_rss_mb = 0;  // MB
 };
 
 // argv[0] is the program's path. Standard output and error go to `log`; the child starts in
