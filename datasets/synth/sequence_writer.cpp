@@ -54,23 +54,35 @@ void close_written(std::ofstream& out, const fs::path& path) {
   if (!out.flush()) throw_input_error(path.string(), "write failed");
 }
 
+// rgb.txt and depth.txt, headed as TUM's, and associate.txt: open, closed by close().
+struct ListFiles {
+  explicit ListFiles(const SequenceSpec& spec)
+      : folder(spec.out),
+        rgb(open_for_writing(folder / "rgb.txt")),
+        depth(open_for_writing(folder / "depth.txt")),
+        assoc(open_for_writing(folder / "associate.txt")) {
+    rgb << "# color images\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+    depth << "# depth maps\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  }
+  void close() {
+    close_written(rgb, folder / "rgb.txt");
+    close_written(depth, folder / "depth.txt");
+    close_written(assoc, folder / "associate.txt");
+  }
+  fs::path folder;
+  std::ofstream rgb, depth, assoc;
+};
+
 void write_lists(const SequenceSpec& spec) {
-  const fs::path rgb_path = spec.out / "rgb.txt", depth_path = spec.out / "depth.txt";
-  const fs::path assoc_path = spec.out / "associate.txt";
-  std::ofstream rgb = open_for_writing(rgb_path), depth = open_for_writing(depth_path);
-  std::ofstream assoc = open_for_writing(assoc_path);
-  rgb << "# color images\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
-  depth << "# depth maps\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
+  ListFiles lists(spec);
   for (int i = 0; i < spec.frames; ++i) {
     // Depth shares the colour stamp: the images are rendered from the same pose.
     const std::string stamp = frame_stamp_text(i);
-    rgb << stamp << " rgb/" << stamp << ".png\n";
-    depth << stamp << " depth/" << stamp << ".png\n";
-    assoc << stamp << " rgb/" << stamp << ".png " << stamp << " depth/" << stamp << ".png\n";
+    lists.rgb << stamp << " rgb/" << stamp << ".png\n";
+    lists.depth << stamp << " depth/" << stamp << ".png\n";
+    lists.assoc << stamp << " rgb/" << stamp << ".png " << stamp << " depth/" << stamp << ".png\n";
   }
-  close_written(rgb, rgb_path);
-  close_written(depth, depth_path);
-  close_written(assoc, assoc_path);
+  lists.close();
 }
 
 void write_revisits(const fs::path& path, const std::vector<Eigen::Isometry3d>& poses) {
@@ -89,31 +101,24 @@ void write_revisits(const fs::path& path, const std::vector<Eigen::Isometry3d>& 
 // The kinect sensor's lists: rgb.txt and depth.txt with their own stamps, associate.txt as
 // associate.py would pair them.
 void write_stream_lists(const SequenceSpec& spec, const StreamStamps& stamps) {
-  const fs::path rgb_path = spec.out / "rgb.txt", depth_path = spec.out / "depth.txt";
-  const fs::path assoc_path = spec.out / "associate.txt";
-  std::ofstream rgb = open_for_writing(rgb_path), depth = open_for_writing(depth_path);
-  std::ofstream assoc = open_for_writing(assoc_path);
-  rgb << "# color images\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
-  depth << "# depth maps\n# file: '" << describe(spec) << "'\n# timestamp filename\n";
-  for (int64_t us : stamps.colour) rgb << stamp_text(us) << " rgb/" << stamp_text(us) << ".png\n";
+  ListFiles lists(spec);
+  for (int64_t us : stamps.colour)
+    lists.rgb << stamp_text(us) << " rgb/" << stamp_text(us) << ".png\n";
   for (int64_t us : stamps.depth)
-    depth << stamp_text(us) << " depth/" << stamp_text(us) << ".png\n";
+    lists.depth << stamp_text(us) << " depth/" << stamp_text(us) << ".png\n";
   for (const auto& [c, d] : stamps.pairs) {
     const std::string rgb_stamp = stamp_text(stamps.colour[c]);
     const std::string depth_stamp = stamp_text(stamps.depth[d]);
-    assoc << rgb_stamp << " rgb/" << rgb_stamp << ".png " << depth_stamp << " depth/"
-          << depth_stamp << ".png\n";
+    lists.assoc << rgb_stamp << " rgb/" << rgb_stamp << ".png " << depth_stamp << " depth/"
+                << depth_stamp << ".png\n";
   }
-  close_written(rgb, rgb_path);
-  close_written(depth, depth_path);
-  close_written(assoc, assoc_path);
+  lists.close();
 }
 
 // Renders colour and depth frames (colour first, then depth, as one parallel loop); returns
 // the first file that could not be written, or "".
 std::string render_kinect_frames(const SyntheticScene& scene, const SequenceSpec& spec,
-                                 const ContinuousTrajectory& trajectory,
-                                 const StreamStamps& stamps,
+                                 const ContinuousTrajectory& trajectory, const StreamStamps& stamps,
                                  const std::function<void(size_t)>& on_progress) {
   const KinectSettings& settings = *spec.kinect;
   const Camera camera = synthetic_camera();
@@ -137,7 +142,8 @@ std::string render_kinect_frames(const SyntheticScene& scene, const SequenceSpec
                                              uint64_t(i), t));
       } else {
         const Eigen::Isometry3d T_w_d = depth_camera_pose(trajectory.pose(t), settings);
-        write_png(path, render_kinect_depth(scene, camera, T_w_d, settings, spec.seed, uint64_t(i)));
+        write_png(path,
+                  render_kinect_depth(scene, camera, T_w_d, settings, spec.seed, uint64_t(i)));
       }
     } catch (const InputError& e) {
 #pragma omp critical(synth_failed)
@@ -164,10 +170,9 @@ void write_kinect_sequence(const SyntheticScene& scene, const SequenceSpec& spec
   Trajectory groundtruth;
   for (int64_t us : stamps.groundtruth)
     groundtruth.push_back(stamp_seconds(us), trajectory.pose(us / 1e6));
-  write_tum_trajectory(
-      spec.out / "groundtruth.txt", groundtruth,
-      "ground truth trajectory (exact, T_w_c of the colour camera)\n# file: '" + describe(spec) +
-          "'");
+  write_tum_trajectory(spec.out / "groundtruth.txt", groundtruth,
+                       "ground truth trajectory (exact, T_w_c of the colour camera)\n# file: '" +
+                           describe(spec) + "'");
   std::vector<Eigen::Isometry3d> frame_poses;
   for (int64_t us : stamps.colour) frame_poses.push_back(trajectory.pose(us / 1e6));
   write_revisits(spec.out / "revisits.txt", frame_poses);

@@ -6,14 +6,13 @@
 #include <cmath>
 #include <opencv2/core.hpp>
 
+#include "datasets/synth/sequence_writer.h"
+
 namespace slamkit::stats {
 namespace {
 
-Camera pinhole() {
-  Camera c;
-  c.fx = c.fy = 525.0, c.cx = 319.5, c.cy = 239.5;
-  return c;
-}
+// The synthetic sequences' camera: fx = fy = 525, 640 x 480, no distortion.
+Camera pinhole() { return synth::synthetic_camera(); }
 
 constexpr double kA = 0.001, kB = 0.002;  // the noise law the images are drawn with
 double true_sigma(double z) { return kA + kB * z * z; }

@@ -8,16 +8,14 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "datasets/synth/sequence_writer.h"
 #include "features/orb_extractor.h"
 
 namespace slamkit::stats {
 namespace {
 
-Camera pinhole() {
-  Camera c;
-  c.fx = c.fy = 525.0, c.cx = 319.5, c.cy = 239.5;
-  return c;
-}
+// The synthetic sequences' camera: fx = fy = 525, 640 x 480, no distortion.
+Camera pinhole() { return synth::synthetic_camera(); }
 
 // T_c2_c1: a 3 degree turn and 4 cm sideways.
 Eigen::Isometry3d second_pose() {
