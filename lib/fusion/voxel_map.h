@@ -1,14 +1,16 @@
 #pragma once
 // The map's voxel grid, filled batch by batch: each voxel keeps the sums of the points that fell
-// in it, so fusion holds memory per voxel (about 48 bytes), not per raw point. Written by hand:
+// in it, so fusion holds memory per voxel (50-65 bytes), not per raw point. Written by hand:
 // PCL's VoxelGrid filters a cloud held whole in memory (32 bytes a raw point: 12.7 million on
 // synthetic desk 600), and merging per-batch grids gave centroids of centroids; PCL's octree
 // centroid grid costs more per voxel and fills on one thread.
 #include <Eigen/Core>
 #include <cstdint>
 #include <opencv2/core.hpp>
-#include <unordered_map>
+#include <utility>
 #include <vector>
+
+#include "fusion/flat_hash_map.h"
 
 namespace slamkit {
 
@@ -34,9 +36,12 @@ class VoxelMap {
   // axis (10 km at 1 cm), which the key cannot hold.
   bool bin(const Eigen::Vector3f& p, const cv::Vec3b& bgr, BinnedPoint& out) const;
 
-  // Adds the points of `points` whose voxels belong to `shard`. One thread per shard at a time.
-  // Each voxel is summed by its shard in the order the points come, so with the same batches
-  // in the same order the sums are the same for any number of shards and threads.
+  // The shard that sums the voxel of `key`.
+  int shard_of(uint64_t key) const { return int(key % uint64_t(shards_.size())); }
+
+  // Adds `points`, whose voxels all belong to `shard`. One thread per shard at a time. Each
+  // voxel is summed by its shard in the order the points come, so with the same batches in the
+  // same order the sums are the same for any number of shards and threads.
   void add(int shard, const std::vector<BinnedPoint>& points);
 
   int shards() const { return int(shards_.size()); }
@@ -53,13 +58,11 @@ class VoxelMap {
     Eigen::Vector3f offset = Eigen::Vector3f::Zero();
     uint32_t blue = 0, green = 0, red = 0, count = 0;
   };
-  int shard_of(uint64_t key) const { return int(key % uint64_t(shards_.size())); }
-  std::vector<uint64_t> sorted_keys() const;
-  bool occupied(uint64_t key) const { return shards_[size_t(shard_of(key))].count(key) > 0; }
-  int occupied_neighbours(uint64_t key) const;
+  // Every voxel's key and sums, in ascending key order.
+  std::vector<std::pair<uint64_t, const Sums*>> sorted_voxels() const;
 
   float leaf_, inverse_leaf_;
-  std::vector<std::unordered_map<uint64_t, Sums>> shards_;
+  std::vector<FlatHashMap<Sums>> shards_;
 };
 
 }  // namespace slamkit
