@@ -155,8 +155,7 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
   report.after_voxel_grid = voxels.size();
 
   std::vector<VoxelCentroid> map =
-      voxels.centroids(settings.remove_outliers ? settings.outlier_neighbour_share : 0);
-  voxels = VoxelMap(float(settings.voxel_size), 1);  // frees the tables
+      voxels.take_centroids(settings.remove_outliers ? settings.outlier_neighbour_share : 0);
   report.after_outlier_removal = map.size();
   if (map.empty())
     throw_input_error(ply_path.string(),

@@ -46,22 +46,33 @@ size_t VoxelMap::size() const {
   return n;
 }
 
-std::vector<std::pair<uint64_t, const VoxelMap::Sums*>> VoxelMap::sorted_voxels() const {
-  std::vector<std::pair<uint64_t, const Sums*>> voxels;
+VoxelCentroid VoxelMap::centroid(uint64_t key, const Sums& s) const {
+  const Eigen::Vector3f corner = voxel_index(key).cast<float>().matrix();
+  const auto mean = [&](uint32_t sum) { return uint8_t(std::lround(double(sum) / s.count)); };
+  return {(corner + s.offset / float(s.count)) * leaf_,
+          cv::Vec3b(mean(s.blue), mean(s.green), mean(s.red))};
+}
+
+std::vector<VoxelMap::KeyedCentroid> VoxelMap::take_sorted_centroids() {
+  std::vector<KeyedCentroid> voxels;
   voxels.reserve(size());
-  for (const auto& table : shards_)
-    table.for_each([&](uint64_t key, const Sums& sums) { voxels.emplace_back(key, &sums); });
+  for (FlatHashMap<Sums>& table : shards_) {
+    table.for_each([&](uint64_t key, const Sums& sums) {
+      voxels.push_back({key, centroid(key, sums)});
+    });
+    table = {};
+  }
   std::sort(voxels.begin(), voxels.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+            [](const KeyedCentroid& a, const KeyedCentroid& b) { return a.key < b.key; });
   return voxels;
 }
 
-std::vector<VoxelCentroid> VoxelMap::centroids(double neighbour_share) const {
-  const std::vector<std::pair<uint64_t, const Sums*>> voxels = sorted_voxels();
+std::vector<VoxelCentroid> VoxelMap::take_centroids(double neighbour_share) {
+  const std::vector<KeyedCentroid> voxels = take_sorted_centroids();
   std::vector<uint8_t> kept(voxels.size(), 1);
   if (neighbour_share > 0 && !voxels.empty()) {
     std::vector<uint64_t> keys(voxels.size());
-    for (size_t i = 0; i < voxels.size(); ++i) keys[i] = voxels[i].first;
+    for (size_t i = 0; i < voxels.size(); ++i) keys[i] = voxels[i].key;
     const std::vector<uint8_t> neighbours = count_occupied_neighbours(keys);
     std::vector<uint8_t> sorted = neighbours;
     std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
@@ -70,14 +81,8 @@ std::vector<VoxelCentroid> VoxelMap::centroids(double neighbour_share) const {
   }
   std::vector<VoxelCentroid> out;
   out.reserve(size_t(std::count(kept.begin(), kept.end(), 1)));
-  for (size_t i = 0; i < voxels.size(); ++i) {
-    if (!kept[i]) continue;
-    const Sums& s = *voxels[i].second;
-    const Eigen::Vector3f corner = voxel_index(voxels[i].first).cast<float>().matrix();
-    const auto mean = [&](uint32_t sum) { return uint8_t(std::lround(double(sum) / s.count)); };
-    out.push_back({(corner + s.offset / float(s.count)) * leaf_,
-                   cv::Vec3b(mean(s.blue), mean(s.green), mean(s.red))});
-  }
+  for (size_t i = 0; i < voxels.size(); ++i)
+    if (kept[i]) out.push_back(voxels[i].centroid);
   return out;
 }
 

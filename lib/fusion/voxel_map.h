@@ -7,7 +7,6 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <opencv2/core.hpp>
-#include <utility>
 #include <vector>
 
 #include "fusion/flat_hash_map.h"
@@ -51,15 +50,21 @@ class VoxelMap {
   // fewer occupied voxels among the 26 around them than neighbour_share x the median voxel's
   // count (0: none left out). Specks of noise and flying pixels have few or no neighbours; the
   // median makes the cut follow the map's density (a sparse map's surfaces have fewer).
-  std::vector<VoxelCentroid> centroids(double neighbour_share = 0) const;
+  // Leaves the map empty: its tables are freed as soon as read, before the sort.
+  std::vector<VoxelCentroid> take_centroids(double neighbour_share = 0);
 
  private:
   struct Sums {
     Eigen::Vector3f offset = Eigen::Vector3f::Zero();
     uint32_t blue = 0, green = 0, red = 0, count = 0;
   };
-  // Every voxel's key and sums, in ascending key order.
-  std::vector<std::pair<uint64_t, const Sums*>> sorted_voxels() const;
+  struct KeyedCentroid {
+    uint64_t key;
+    VoxelCentroid centroid;
+  };
+  VoxelCentroid centroid(uint64_t key, const Sums& sums) const;
+  // Every voxel's centroid, in ascending key order; empties the tables.
+  std::vector<KeyedCentroid> take_sorted_centroids();
 
   float leaf_, inverse_leaf_;
   std::vector<FlatHashMap<Sums>> shards_;

@@ -34,7 +34,7 @@ std::vector<VoxelCentroid> fill(const std::vector<std::pair<Eigen::Vector3f, cv:
     binned[size_t(voxels.shard_of(b.key))].push_back(b);
   }
   for (int shard = 0; shard < voxels.shards(); ++shard) voxels.add(shard, binned[size_t(shard)]);
-  return voxels.centroids(neighbour_share);
+  return voxels.take_centroids(neighbour_share);
 }
 
 TEST(VoxelMap, EachCentroidIsTheMeanOfItsVoxelsPoints) {
