@@ -36,11 +36,13 @@ PixelGrid make_pixel_grid(const Camera& camera, int stride) {
   return grid;
 }
 
-// The frame's valid samples, in world coordinates, placed in `voxels`' grid, appended to `out`;
-// `beyond_grid` counts those the grid cannot hold.
+// A frame's points placed in the grid, one list per shard of the grid.
+using ShardedPoints = std::vector<std::vector<BinnedPoint>>;
+
+// The frame's valid samples, in world coordinates, placed in `voxels`' grid, appended to their
+// shards' lists in `out`; `beyond_grid` counts those the grid cannot hold.
 void bin_frame(const FusionSamples& frame, const PixelGrid& grid, const Eigen::Isometry3d& T_w_c,
-               double max_depth, const VoxelMap& voxels, std::vector<BinnedPoint>& out,
-               size_t& beyond_grid) {
+               double max_depth, const VoxelMap& voxels, ShardedPoints& out, size_t& beyond_grid) {
   const Eigen::Matrix3d R = T_w_c.linear();
   const Eigen::Vector3d t = T_w_c.translation();
   BinnedPoint binned;
@@ -49,7 +51,7 @@ void bin_frame(const FusionSamples& frame, const PixelGrid& grid, const Eigen::I
     if (!(z > 0 && z <= max_depth)) continue;
     const Eigen::Vector3d p_c(grid.rays[i].x() * z, grid.rays[i].y() * z, z);
     if (voxels.bin((R * p_c + t).cast<float>(), frame.bgr[i], binned))
-      out.push_back(binned);
+      out[size_t(voxels.shard_of(binned.key))].push_back(binned);
     else
       ++beyond_grid;
   }
@@ -106,13 +108,13 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
   const PixelGrid grid = make_pixel_grid(sequence.camera(), settings.pixel_stride);
   VoxelMap voxels(float(settings.voxel_size), omp_get_max_threads());
   const size_t batch_size = size_t(settings.batch_frames);
-  std::vector<std::vector<BinnedPoint>> batch(batch_size);
+  std::vector<ShardedPoints> batch(batch_size, ShardedPoints(size_t(voxels.shards())));
   FusionReport report;
   report.frames = frames.size();
 
-  // A batch's frames are loaded (unless their samples were kept) and binned in parallel, then
-  // each thread adds its shard's points of the whole batch in frame order, so that the sums do
-  // not depend on the thread count.
+  // A batch's frames are loaded (unless their samples were kept) and binned in parallel, each
+  // point to its voxel's shard, then each thread adds its shard's points of the whole batch in
+  // frame order, so that the sums do not depend on the thread count.
   for (size_t first = 0; first < frames.size(); first += batch_size) {
     const size_t count = std::min(batch_size, frames.size() - first);
     std::vector<std::string> errors(count);
@@ -120,8 +122,8 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
 #pragma omp parallel for schedule(dynamic, 1)
     for (long i = 0; i < long(count); ++i) {
       const FusionFrame& f = frames[first + size_t(i)];
-      std::vector<BinnedPoint>& points = batch[size_t(i)];
-      points.clear();
+      ShardedPoints& points = batch[size_t(i)];
+      for (std::vector<BinnedPoint>& shard_points : points) shard_points.clear();
       try {  // exceptions must not escape an OpenMP region
         if (f.samples) {
           bin_frame(*f.samples, grid, f.T_w_c, settings.max_depth, voxels, points,
@@ -139,10 +141,12 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
       if (!error.empty()) throw InputError(error);
 #pragma omp parallel for schedule(static, 1)
     for (int shard = 0; shard < voxels.shards(); ++shard)
-      for (size_t i = 0; i < count; ++i) voxels.add(shard, batch[i]);
+      for (size_t i = 0; i < count; ++i) voxels.add(shard, batch[i][size_t(shard)]);
     for (size_t i = 0; i < count; ++i) {
       frames[first + i].samples.reset();
-      report.raw_points += batch[i].size() + beyond_grid[i];
+      for (const std::vector<BinnedPoint>& shard_points : batch[i])
+        report.raw_points += shard_points.size();
+      report.raw_points += beyond_grid[i];
       report.beyond_grid += beyond_grid[i];
     }
     if (progress) progress(first + count, frames.size());
@@ -151,8 +155,7 @@ FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> fram
   report.after_voxel_grid = voxels.size();
 
   std::vector<VoxelCentroid> map =
-      voxels.centroids(settings.remove_outliers ? settings.outlier_neighbour_share : 0);
-  voxels = VoxelMap(float(settings.voxel_size), 1);  // frees the tables
+      voxels.take_centroids(settings.remove_outliers ? settings.outlier_neighbour_share : 0);
   report.after_outlier_removal = map.size();
   if (map.empty())
     throw_input_error(ply_path.string(),

@@ -1,14 +1,15 @@
 #pragma once
 // The map's voxel grid, filled batch by batch: each voxel keeps the sums of the points that fell
-// in it, so fusion holds memory per voxel (about 48 bytes), not per raw point. Written by hand:
+// in it, so fusion holds memory per voxel (50-65 bytes), not per raw point. Written by hand:
 // PCL's VoxelGrid filters a cloud held whole in memory (32 bytes a raw point: 12.7 million on
 // synthetic desk 600), and merging per-batch grids gave centroids of centroids; PCL's octree
 // centroid grid costs more per voxel and fills on one thread.
 #include <Eigen/Core>
 #include <cstdint>
 #include <opencv2/core.hpp>
-#include <unordered_map>
 #include <vector>
+
+#include "fusion/flat_hash_map.h"
 
 namespace slamkit {
 
@@ -34,9 +35,12 @@ class VoxelMap {
   // axis (10 km at 1 cm), which the key cannot hold.
   bool bin(const Eigen::Vector3f& p, const cv::Vec3b& bgr, BinnedPoint& out) const;
 
-  // Adds the points of `points` whose voxels belong to `shard`. One thread per shard at a time.
-  // Each voxel is summed by its shard in the order the points come, so with the same batches
-  // in the same order the sums are the same for any number of shards and threads.
+  // The shard that sums the voxel of `key`.
+  int shard_of(uint64_t key) const { return int(key % uint64_t(shards_.size())); }
+
+  // Adds `points`, whose voxels all belong to `shard`. One thread per shard at a time. Each
+  // voxel is summed by its shard in the order the points come, so with the same batches in the
+  // same order the sums are the same for any number of shards and threads.
   void add(int shard, const std::vector<BinnedPoint>& points);
 
   int shards() const { return int(shards_.size()); }
@@ -46,20 +50,24 @@ class VoxelMap {
   // fewer occupied voxels among the 26 around them than neighbour_share x the median voxel's
   // count (0: none left out). Specks of noise and flying pixels have few or no neighbours; the
   // median makes the cut follow the map's density (a sparse map's surfaces have fewer).
-  std::vector<VoxelCentroid> centroids(double neighbour_share = 0) const;
+  // Leaves the map empty: its tables are freed as soon as read, before the sort.
+  std::vector<VoxelCentroid> take_centroids(double neighbour_share = 0);
 
  private:
   struct Sums {
     Eigen::Vector3f offset = Eigen::Vector3f::Zero();
     uint32_t blue = 0, green = 0, red = 0, count = 0;
   };
-  int shard_of(uint64_t key) const { return int(key % uint64_t(shards_.size())); }
-  std::vector<uint64_t> sorted_keys() const;
-  bool occupied(uint64_t key) const { return shards_[size_t(shard_of(key))].count(key) > 0; }
-  int occupied_neighbours(uint64_t key) const;
+  struct KeyedCentroid {
+    uint64_t key;
+    VoxelCentroid centroid;
+  };
+  VoxelCentroid centroid(uint64_t key, const Sums& sums) const;
+  // Every voxel's centroid, in ascending key order; empties the tables.
+  std::vector<KeyedCentroid> take_sorted_centroids();
 
   float leaf_, inverse_leaf_;
-  std::vector<std::unordered_map<uint64_t, Sums>> shards_;
+  std::vector<FlatHashMap<Sums>> shards_;
 };
 
 }  // namespace slamkit

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
+#include <set>
+#include <tuple>
 
 namespace slamkit {
 namespace {
@@ -24,14 +27,14 @@ std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> scattered_points(size_t count
 std::vector<VoxelCentroid> fill(const std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>>& points,
                                 float leaf, int shards, double neighbour_share = 0) {
   VoxelMap voxels(leaf, shards);
-  std::vector<BinnedPoint> binned;
+  std::vector<std::vector<BinnedPoint>> binned(size_t(voxels.shards()));
   for (const auto& [p, bgr] : points) {
     BinnedPoint b;
     EXPECT_TRUE(voxels.bin(p, bgr, b));
-    binned.push_back(b);
+    binned[size_t(voxels.shard_of(b.key))].push_back(b);
   }
-  for (int shard = 0; shard < voxels.shards(); ++shard) voxels.add(shard, binned);
-  return voxels.centroids(neighbour_share);
+  for (int shard = 0; shard < voxels.shards(); ++shard) voxels.add(shard, binned[size_t(shard)]);
+  return voxels.take_centroids(neighbour_share);
 }
 
 TEST(VoxelMap, EachCentroidIsTheMeanOfItsVoxelsPoints) {
@@ -63,11 +66,49 @@ TEST(VoxelMap, EachCentroidIsTheMeanOfItsVoxelsPoints) {
 
 TEST(VoxelMap, ShardsChangeNothing) {
   const auto points = scattered_points(3000);
-  const std::vector<VoxelCentroid> one = fill(points, 0.01f, 1), three = fill(points, 0.01f, 3);
-  ASSERT_EQ(one.size(), three.size());
-  for (size_t i = 0; i < one.size(); ++i) {
-    EXPECT_EQ(one[i].position, three[i].position) << i;  // bit for bit: same sums, same order
-    EXPECT_EQ(one[i].bgr, three[i].bgr) << i;
+  for (const double neighbour_share : {0.0, 0.3}) {
+    const std::vector<VoxelCentroid> one = fill(points, 0.01f, 1, neighbour_share),
+                                     three = fill(points, 0.01f, 3, neighbour_share);
+    ASSERT_EQ(one.size(), three.size());
+    for (size_t i = 0; i < one.size(); ++i) {
+      EXPECT_EQ(one[i].position, three[i].position) << i;  // bit for bit: same sums, same order
+      EXPECT_EQ(one[i].bgr, three[i].bgr) << i;
+    }
+  }
+}
+
+TEST(VoxelMap, TheNeighbourCutKeepsWhatABruteForceCountKeeps) {
+  // A sparse cloud, so that voxels have from none to many occupied neighbours.
+  const float leaf = 0.01f;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> coordinate(-0.06f, 0.06f);
+  std::vector<std::pair<Eigen::Vector3f, cv::Vec3b>> points;
+  std::set<std::tuple<int, int, int>> cells;
+  for (int i = 0; i < 600; ++i) {
+    const Eigen::Vector3f p(coordinate(rng), coordinate(rng), coordinate(rng));
+    points.push_back({p, {}});
+    const Eigen::Array3i cell = (p.array() / leaf).floor().cast<int>();
+    cells.insert({cell.x(), cell.y(), cell.z()});
+  }
+  std::vector<int> counts;
+  for (const auto& [x, y, z] : cells) {
+    int n = 0;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+          n += (dx || dy || dz) && cells.count({x + dx, y + dy, z + dz});
+    counts.push_back(n);
+  }
+  std::vector<int> sorted = counts;
+  std::sort(sorted.begin(), sorted.end());
+  const int median = sorted[sorted.size() / 2];
+  ASSERT_GE(median, 2);
+  for (const double share : {0.5, 1.0}) {
+    const long least = std::lround(share * median);
+    const size_t kept =
+        size_t(std::count_if(counts.begin(), counts.end(), [&](int n) { return n >= least; }));
+    ASSERT_LT(kept, cells.size()) << share;  // the cut does leave some out
+    EXPECT_EQ(fill(points, leaf, 2, share).size(), kept) << share;
   }
 }
 
