@@ -77,8 +77,8 @@ DepthSample sample_depth(const SyntheticScene& scene, const Camera& camera,
   double x = u, y = v;
   if (s.has(KinectEffect::kDepthNoise)) {
     // Where the surface at the pixel centre is seen, its incidence sets the lateral noise.
-    const Eigen::Vector3d d0 =
-        T_w_d.linear() * Eigen::Vector3d((u - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1);
+    const Eigen::Vector3d d0 = T_w_d.linear() * Eigen::Vector3d((u - camera.cx) / camera.fx,
+                                                                (v - camera.cy) / camera.fy, 1);
     const auto hit0 = scene.cast_ray(T_w_d.translation(), d0, parts);
     if (hit0) {
       const double theta = std::acos(std::min(1.0, std::abs(hit0->normal.dot(d0)) / d0.norm()));
@@ -124,6 +124,8 @@ std::vector<Eigen::Vector3d> colour_pixel_rays(const Camera& camera, const Kinec
 Camera kinect_colour_camera(const Camera& camera, const KinectSettings& s) {
   Camera c = camera;
   if (s.has(KinectEffect::kLensDistortion)) c.distortion = {s.k1, s.k2, s.p1, s.p2, s.k3};
+  if (s.has(KinectEffect::kRollingShutter)) c.readout_time = s.readout_s;
+  c.exact_depth_stamps = s.has(KinectEffect::kStreamTiming);  // the stamps are the render's
   return c;
 }
 
@@ -221,8 +223,8 @@ Eigen::Isometry3d depth_camera_pose(const Eigen::Isometry3d& T_w_colour, const K
 }
 
 cv::Mat render_kinect_depth(const SyntheticScene& scene, const Camera& camera,
-                            const Eigen::Isometry3d& T_w_d, const KinectSettings& s,
-                            uint64_t seed, uint64_t depth_index) {
+                            const Eigen::Isometry3d& T_w_d, const KinectSettings& s, uint64_t seed,
+                            uint64_t depth_index) {
   const int width = camera.width, height = camera.height;
   const std::vector<Eigen::Vector3d> rays = pinhole_rays(camera);
   const uint64_t first_pixel = depth_index * uint64_t(width) * uint64_t(height);

@@ -22,7 +22,8 @@ using PoseAt = std::function<Eigen::Isometry3d(double t)>;
 // the lens distortion when that effect is on (the camera's undistort_pixels does the work).
 std::vector<Eigen::Vector3d> colour_pixel_rays(const Camera& camera, const KinectSettings& s);
 
-// The camera with the distortion the colour image has (calibration.yaml carries it).
+// The camera with the distortion and rolling-shutter readout the colour image has, and depth
+// stamps that are exact (calibration.yaml carries them).
 Camera kinect_colour_camera(const Camera& camera, const KinectSettings& s);
 
 // The number of exposure sub-frames for a frame at t: one per blur_step_px the scene moves in
@@ -46,7 +47,7 @@ Eigen::Isometry3d depth_camera_pose(const Eigen::Isometry3d& T_w_colour, const K
 // CV_16UC1 depth frame `depth_index` seen from T_w_d (the IR camera, pinhole `camera`), in
 // 1/camera.depth_scale metres, 0 where missing.
 cv::Mat render_kinect_depth(const SyntheticScene& scene, const Camera& camera,
-                            const Eigen::Isometry3d& T_w_d, const KinectSettings& s,
-                            uint64_t seed, uint64_t depth_index);
+                            const Eigen::Isometry3d& T_w_d, const KinectSettings& s, uint64_t seed,
+                            uint64_t depth_index);
 
 }  // namespace slamkit::synth

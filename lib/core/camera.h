@@ -1,6 +1,7 @@
 #pragma once
 // Pinhole camera with OpenCV's 5-parameter radial-tangential distortion (k1 k2 p1 p2 k3),
-// the depth image's scale and the valid depth range.
+// the depth image's scale, the valid depth range and the exposure timing (rolling shutter,
+// depth stamps).
 #include <Eigen/Core>
 #include <filesystem>
 #include <optional>
@@ -22,6 +23,13 @@ struct Camera {
   double depth_scale = 5000.0;  // raw 16-bit depth units per metre
   double min_depth = 0.1;       // metres; depth outside [min, max] or 0 is invalid
   double max_depth = 8.0;
+  // Rolling shutter: seconds from the first row's exposure to the last row's, the middle row
+  // being at the frame's stamp; 0 for a global shutter (and when unknown).
+  double readout_time = 0.0;
+  // depth.txt's stamps are the instants the depth images were taken (a clock the recording
+  // trusts). TUM's are not taken as such: reading the TUM pieces' depth at its stamps made them
+  // worse (docs/experiments.md, exposure timing).
+  bool exact_depth_stamps = false;
 
   // Pinhole projection of a camera-frame point (no distortion: keypoints are undistorted).
   Eigen::Vector2d project(const Eigen::Vector3d& p_c) const;

@@ -32,6 +32,17 @@ double read_field(const YAML::Node& root, const std::string& path, const char* k
   return value;
 }
 
+bool read_flag(const YAML::Node& root, const std::string& path, const char* key, bool fallback) {
+  const YAML::Node node = root[key];
+  if (!node) return fallback;
+  try {
+    return node.as<bool>();
+  } catch (const YAML::Exception&) {
+    throw_input_error(path, node.Mark().line + 1,
+                      std::string("'") + key + "' is not true or false");
+  }
+}
+
 // Image sides are whole pixels, no larger than any image read_png accepts.
 int read_side(const YAML::Node& root, const std::string& path, const char* key, int fallback) {
   const double value = read_field(root, path, key, fallback, {1, double(kMaxImageSide)});
@@ -63,6 +74,8 @@ Camera read_camera_yaml(const std::filesystem::path& path) {
   c.depth_scale = read_field(root, name, "depth_scale", 5000.0, above(0));
   c.min_depth = read_field(root, name, "min_depth", 0.1, at_least(0));
   c.max_depth = read_field(root, name, "max_depth", 8.0, above(0));
+  c.readout_time = read_field(root, name, "readout_time", 0.0, {0, 1});
+  c.exact_depth_stamps = read_flag(root, name, "exact_depth_stamps", false);
   if (!(c.min_depth < c.max_depth))
     throw_input_error(name, "min_depth " + format_exact(c.min_depth) + " must be below max_depth " +
                                 format_exact(c.max_depth));
@@ -86,6 +99,9 @@ void write_camera_yaml(const std::filesystem::path& path, const Camera& c) {
   out << YAML::Key << "depth_scale" << YAML::Value << c.depth_scale;
   out << YAML::Key << "min_depth" << YAML::Value << c.min_depth;
   out << YAML::Key << "max_depth" << YAML::Value << c.max_depth;
+  // Written only when set, so that files of sensors without them stay as they were.
+  if (c.readout_time > 0) out << YAML::Key << "readout_time" << YAML::Value << c.readout_time;
+  if (c.exact_depth_stamps) out << YAML::Key << "exact_depth_stamps" << YAML::Value << true;
   out << YAML::EndMap;
   write_yaml_file(path, out);
 }

@@ -7,8 +7,8 @@
 #include "core/association.h"
 #include "core/error.h"
 #include "io/camera_yaml.h"
-#include "io/png_file.h"
 #include "io/path_kind.h"
+#include "io/png_file.h"
 #include "io/text_table.h"
 #include "io/trajectory_io.h"
 
@@ -19,8 +19,7 @@ namespace {
 
 StampedFile stamped_file(const fs::path& list, const TableRow& row, size_t field) {
   const double stamp = parse_number(list, row, field);
-  if (!std::isfinite(stamp))
-    throw_input_error(list.string(), row.line, "timestamp is not finite");
+  if (!std::isfinite(stamp)) throw_input_error(list.string(), row.line, "timestamp is not finite");
   return {stamp, row.fields.at(field + 1), row.line};
 }
 
@@ -127,6 +126,7 @@ TumSequence TumSequence::open(const fs::path& folder, const SequenceOptions& opt
   TumSequence seq;
   seq.folder_ = folder;
   seq.camera_ = choose_camera(folder, options);
+  seq.depth_time_offset_ = options.time_offset;
   seq.frames_ = options.association_file ? read_association_file(*options.association_file)
                                          : associate_lists(folder, options);
 
@@ -164,8 +164,8 @@ RgbdFrame TumSequence::load(size_t i) const {
   if (rgb.channels() == 1) cv::cvtColor(rgb, rgb, cv::COLOR_GRAY2BGR);
   if (rgb.channels() == 4) cv::cvtColor(rgb, rgb, cv::COLOR_BGRA2BGR);
   if (raw_depth.type() != CV_16UC1)
-    throw_input_error(depth_path, "depth image must be 16-bit single channel, found " +
-                                      describe_type(raw_depth));
+    throw_input_error(
+        depth_path, "depth image must be 16-bit single channel, found " + describe_type(raw_depth));
   if (rgb.size() != raw_depth.size())
     throw_input_error(depth_path, "depth is " + std::to_string(raw_depth.cols) + "x" +
                                       std::to_string(raw_depth.rows) + " but colour is " +

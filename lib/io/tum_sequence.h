@@ -3,11 +3,10 @@
 // Opening parses and checks the lists and associates RGB with depth; images are decoded
 // only when a frame is loaded.
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "core/camera.h"
 #include "core/trajectory.h"
@@ -56,7 +55,12 @@ class TumSequence {
   size_t size() const { return frames_.size(); }
   const FrameFiles& files(size_t i) const { return frames_.at(i); }
   double stamp(size_t i) const { return frames_.at(i).rgb.stamp; }
-  double duration() const { return frames_.empty() ? 0 : frames_.back().rgb.stamp - frames_.front().rgb.stamp; }
+  // When frame i's depth image was taken: its stamp in depth.txt (or the association file)
+  // plus the options' time_offset, the depth clock's correction.
+  double depth_stamp(size_t i) const { return frames_.at(i).depth.stamp + depth_time_offset_; }
+  double duration() const {
+    return frames_.empty() ? 0 : frames_.back().rgb.stamp - frames_.front().rgb.stamp;
+  }
   const std::optional<Trajectory>& groundtruth() const { return groundtruth_; }
 
   // Decodes frame i. Throws InputError for a missing or unreadable PNG, a depth image that is
@@ -68,6 +72,7 @@ class TumSequence {
   std::filesystem::path folder_;
   Camera camera_;
   std::vector<FrameFiles> frames_;
+  double depth_time_offset_ = 0;
   std::optional<Trajectory> groundtruth_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "features/descriptor.h"
 
@@ -272,6 +273,15 @@ int Map::predict_octave(const MapPoint& point, double distance) const {
   const int octave = static_cast<int>(
       std::ceil(std::log(point.max_distance / distance) / std::log(pyramid_.scale_factor)));
   return std::clamp(octave, 0, pyramid_.levels - 1);
+}
+
+void Map::set_keyframe_keypoints(int keyframe, std::vector<Eigen::Vector2d> undistorted,
+                                 std::vector<float> depths) {
+  Keyframe& k = keyframes_[size_t(keyframe)];
+  if (undistorted.size() != k.keypoints.size() || depths.size() != k.keypoints.size())
+    throw std::invalid_argument("set_keyframe_keypoints: one pixel and depth per keypoint");
+  k.undistorted = std::move(undistorted);
+  k.depths = std::move(depths);
 }
 
 void Map::set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c) {

@@ -68,6 +68,9 @@ class Map {
   int predict_octave(const MapPoint& point, double distance) const;
 
   void set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c);
+  // New pinhole pixels and depths for the keyframe's keypoints (same count and order).
+  void set_keyframe_keypoints(int keyframe, std::vector<Eigen::Vector2d> undistorted,
+                              std::vector<float> depths);
   void set_point_position(int point, const Eigen::Vector3d& p_w) {
     points_[size_t(point)].p_w = p_w;
   }

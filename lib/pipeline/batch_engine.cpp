@@ -89,7 +89,7 @@ RunResult track_sequence(const TumSequence& sequence, const Settings& settings,
     // whose dense frames have such loops: 6.2 s -> 5.9 s). Their results do not depend on it.
     omp_set_num_threads(next.valid() ? 1 : result.threads);
     Stopwatch watch;
-    for (const PreparedFrame& frame : frames) {
+    for (PreparedFrame& frame : frames) {
       TrackedFrame record = tracker.track(frame);
       FrameTiming timing{frame.decode_ms, frame.features_ms, frame.window_code_ms};
       if (record.keyframe) {

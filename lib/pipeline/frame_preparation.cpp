@@ -20,6 +20,7 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
       out.decode_ms = watch.lap();
       out.index = frame.index;
       out.stamp = frame.stamp;
+      out.depth_stamp = sequence.depth_stamp(begin + size_t(k));
       out.depth = frame.depth;
       out.rgb = frame.rgb;
       out.features = extract_orb(frame.rgb, sequence.camera(), settings.orb);

@@ -12,6 +12,7 @@
 #include "features/keypoint_grid.h"
 #include "features/projection_matcher.h"
 #include "keyframes/keyframe_rule.h"
+#include "tracking/exposure_unrolling.h"
 #include "tracking/failure_check.h"
 #include "tracking/icp_svd_ransac.h"
 #include "tracking/motion_model.h"
@@ -33,7 +34,7 @@ Tracker::Tracker(const Camera& camera, const Settings& settings, Map& map)
   }
 }
 
-TrackedFrame Tracker::track(const PreparedFrame& frame) {
+TrackedFrame Tracker::track(PreparedFrame& frame) {
   TrackedFrame record;
   record.index = frame.index;
   record.stamp = frame.stamp;
@@ -47,6 +48,8 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
   } else {
     Stopwatch watch;
     const Eigen::Isometry3d guess = predict_pose(frame.stamp);
+    if (velocity_known_)  // the constant-velocity model's velocity, for matching and the solvers
+      unroll_exposure(frame, velocity_between(poses_[poses_.size() - 2], poses_.back()), guess);
     // After a failure the prediction cannot be trusted: match without it.
     std::vector<Match> matches =
         previous_lost_ ? match_for_relocalisation(frame) : match_local_map(frame, guess);
@@ -56,6 +59,14 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     PoseEstimate estimate = estimate_pose(frame, matches, guess, record);
     record.pose_ms = watch.lap();
     if (estimate.ok) refine_pose(frame, estimate, record);
+    // Again with the velocity into this frame, which the refined pose now gives (after a
+    // failure, the mean velocity since the last tracked frame).
+    if (estimate.ok && record.refined) {
+      const StampedVelocity v = velocity_between(last_tracked_, {frame.stamp, estimate.T_w_c});
+      const bool first_moved = poses_.size() == 1 && unroll_first_keyframe(v);
+      if (unroll_exposure(frame, v, estimate.T_w_c) || first_moved)
+        refine_pose(frame, estimate, record);
+    }
     record.refine_ms = watch.lap();
 
     if (estimate.ok) estimate.ok = accept(frame, estimate, record);
@@ -76,7 +87,9 @@ TrackedFrame Tracker::track(const PreparedFrame& frame) {
     record.keyframe_ms = watch.lap();
   }
   poses_.push_back({frame.stamp, record.T_w_c});
+  if (!record.lost) last_tracked_ = poses_.back();
   previous_depth_ = frame.depth;
+  previous_depth_offset_ = depth_offset(frame);
   previous_grey_ = frame.features.pyramid.levels[0];
   velocity_known_ = !record.lost && !previous_lost_;
   previous_lost_ = record.lost;
@@ -367,6 +380,50 @@ Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
   }
   if (velocities.size() < 2) return predict_pose(stamp);
   return predict_linear_velocity(velocities[0], velocities[1], poses_.back(), stamp);
+}
+
+bool Tracker::unroll_exposure(PreparedFrame& frame, const StampedVelocity& v,
+                              const Eigen::Isometry3d& T_w_c) {
+  const ExposureTiming timing{camera_.readout_time, depth_offset(frame)};
+  if (!settings_.tracking.unroll_exposure || timing.is_instant()) return false;
+  if (seen_frame_ != frame.index) {
+    seen_frame_ = frame.index;
+    seen_rows_.resize(frame.features.size());
+    for (size_t i = 0; i < seen_rows_.size(); ++i) seen_rows_[i] = frame.features.keypoints[i].pt.y;
+    seen_undistorted_ = frame.features.undistorted;
+    seen_depths_ = frame.keypoint_depths;
+  }
+  const CameraVelocity velocity{v.angular, T_w_c.linear().transpose() * v.linear};
+  UnrolledKeypoints unrolled = slamkit::unroll_exposure(seen_rows_, seen_undistorted_, seen_depths_,
+                                                        frame.depth, camera_, timing, velocity);
+  frame.features.undistorted = std::move(unrolled.undistorted);
+  frame.keypoint_depths = std::move(unrolled.depths);
+  return true;
+}
+
+double Tracker::depth_offset(const PreparedFrame& frame) const {
+  return camera_.exact_depth_stamps ? frame.depth_stamp - frame.stamp : 0.0;
+}
+
+bool Tracker::unroll_first_keyframe(const StampedVelocity& v) {
+  const ExposureTiming timing{camera_.readout_time, previous_depth_offset_};
+  if (!settings_.tracking.unroll_exposure || timing.is_instant() || map_.keyframes().size() != 1)
+    return false;
+  const Keyframe& first = map_.keyframe(0);
+  std::vector<float> rows(first.keypoints.size());
+  for (size_t i = 0; i < rows.size(); ++i) rows[i] = first.keypoints[i].pt.y;
+  const CameraVelocity velocity{v.angular, first.T_w_c.linear().transpose() * v.linear};
+  UnrolledKeypoints unrolled = slamkit::unroll_exposure(rows, first.undistorted, first.depths,
+                                                        previous_depth_, camera_, timing, velocity);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const int id = first.point_ids[i];
+    if (id < 0 || unrolled.depths[i] <= 0) continue;  // depth lost: the point stays as made
+    map_.set_point_position(
+        id, first.T_w_c * camera_.back_project(unrolled.undistorted[i], unrolled.depths[i]));
+    map_.update_point_geometry(id);
+  }
+  map_.set_keyframe_keypoints(0, std::move(unrolled.undistorted), std::move(unrolled.depths));
+  return true;
 }
 
 void Tracker::settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record) {

@@ -11,6 +11,7 @@
 #include "core/settings/settings.h"
 #include "core/trajectory.h"
 #include "map/map.h"
+#include "tracking/motion_model.h"
 #include "tracking/photometric_equations.h"
 #include "tracking/prepared_frame.h"
 #include "tracking/surface_pyramid.h"
@@ -29,8 +30,9 @@ class Tracker {
 
   // Tracks the next frame (frames must come in order) and returns what happened. When the
   // record says keyframe, the caller inserts keyframe_from(frame, record) into the map before
-  // the next frame.
-  TrackedFrame track(const PreparedFrame& frame);
+  // the next frame. The frame's keypoints are moved to its colour stamp when the camera's
+  // exposure timing asks for it (tracking/exposure_unrolling.h).
+  TrackedFrame track(PreparedFrame& frame);
 
   // The keyframe the frame makes: its features and pose, its keypoints linked to the points
   // tracking matched (the inliers of the last track() call).
@@ -64,6 +66,16 @@ class Tracker {
                                     const Eigen::Isometry3d& T_w_c_guess) const;
   void refine_pose(const PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record) const;
   Eigen::Isometry3d motion_model_pose(double stamp) const;
+  // Moves the frame's keypoints, as the preparation found them, to its colour stamp along
+  // velocity v (velocity_between) at pose T_w_c. False, and nothing moved, for instant timing.
+  bool unroll_exposure(PreparedFrame& frame, const StampedVelocity& v,
+                       const Eigen::Isometry3d& T_w_c);
+  // The first keyframe was made before any velocity was known: once the second frame gives
+  // one, its keypoints and the points they made are moved as unroll_exposure moves a frame's,
+  // so that the map does not mix skewed and unskewed views. True if anything moved.
+  bool unroll_first_keyframe(const StampedVelocity& v);
+  // The depth image's instant minus the colour stamp, when the camera trusts depth stamps.
+  double depth_offset(const PreparedFrame& frame) const;
   void choose_keyframe(const PreparedFrame& frame, TrackedFrame& record);
   // Counts the inliers as found, and takes the keyframe sharing most of them as reference.
   void settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record);
@@ -81,14 +93,21 @@ class Tracker {
   size_t voted_at_keyframes_ = 0;     // ...counted when the map had this many keyframes
   std::vector<size_t> point_mark_;    // per map point: last frame that listed it (local map)
   std::vector<StampedPose> poses_;    // every tracked frame, in order
+  StampedPose last_tracked_;          // the last frame that was not lost
   std::map<size_t, WindowCode> window_codes_;  // recent frames' codes, by frame index
   cv::Mat previous_depth_;                     // as recorded, for dense alignment
+  double previous_depth_offset_ = 0;           // its stamp minus the previous colour stamp
   cv::Mat previous_grey_;                      // level 0 of the ORB pyramid, for dense alignment
   SurfacePyramid previous_surfaces_;   // the previous frame's, if dense alignment built them
   GreyPyramid previous_grey_pyramid_;  // likewise
   bool previous_lost_ = false;
   bool velocity_known_ = false;  // the last two frames were tracked, not lost or re-acquired
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras
+  // The current frame's keypoints as prepared, before unroll_exposure moved them.
+  size_t seen_frame_ = size_t(-1);
+  std::vector<float> seen_rows_;
+  std::vector<Eigen::Vector2d> seen_undistorted_;
+  std::vector<float> seen_depths_;
 };
 
 }  // namespace slamkit

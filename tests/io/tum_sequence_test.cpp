@@ -87,7 +87,9 @@ class BrokenSequence : public ::testing::Test {
                   cv::Mat(480, 640, CV_16UC1, cv::Scalar(5000)));
     }
   }
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
   void expect_open_error(const std::string& fragment) {
     try {
       TumSequence::open(dir_);
@@ -141,6 +143,38 @@ TEST_F(BrokenSequence, NoPairWithinTolerance) {
 TEST_F(BrokenSequence, GroundtruthWithoutOverlap) {
   write("groundtruth.txt", "100 0 0 0 0 0 0 1\n101 0 0 0 0 0 0 1\n");
   expect_open_error("groundtruth.txt: groundtruth covers 100.000..101.000 s");
+}
+
+TEST_F(BrokenSequence, DepthStampsCarryTheClockOffset) {
+  SequenceOptions options;
+  options.time_offset = -0.005;
+  const TumSequence seq = TumSequence::open(dir_, options);
+  ASSERT_EQ(seq.size(), 2u);
+  EXPECT_DOUBLE_EQ(seq.stamp(1), 1.10);
+  EXPECT_DOUBLE_EQ(seq.depth_stamp(1), 1.11 - 0.005);
+}
+
+TEST_F(BrokenSequence, CalibrationCarriesTheExposureTimingAndRejectsBadValues) {
+  const std::string camera = "fx: 525\nfy: 525\ncx: 319.5\ncy: 239.5\n";
+  write("calibration.yaml", camera + "readout_time: 0.03\nexact_depth_stamps: true\n");
+  SequenceOptions options;
+  options.calibration_file = dir_ / "calibration.yaml";
+  const TumSequence seq = TumSequence::open(dir_, options);
+  EXPECT_DOUBLE_EQ(seq.camera().readout_time, 0.03);
+  EXPECT_TRUE(seq.camera().exact_depth_stamps);
+  for (const auto& [line, message] :
+       {std::pair<std::string, std::string>{
+            "exact_depth_stamps: maybe\n",
+            "calibration.yaml:5: 'exact_depth_stamps' is not true or false"},
+        {"readout_time: 2\n", "calibration.yaml:5: readout_time: 2 is outside"}}) {
+    write("calibration.yaml", camera + line);
+    try {
+      TumSequence::open(dir_, options);
+      FAIL() << "no error, expected: " << message;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST_F(BrokenSequence, ListedPngMissing) {

@@ -98,6 +98,10 @@ TEST(SensorCli, KinectSequenceHasItsOwnDepthStampsAndIsTheSameForAnyThreadCount)
   options.calibration_file = a / "calibration.yaml";
   const TumSequence sequence = TumSequence::open(a, options);
   EXPECT_GE(sequence.size(), 11u);
+  // The calibration tells the tracker the exposure timing (docs/method.md#exposure-timing).
+  EXPECT_DOUBLE_EQ(sequence.camera().readout_time, KinectSettings().readout_s);
+  EXPECT_TRUE(sequence.camera().exact_depth_stamps);
+  EXPECT_EQ(sequence.depth_stamp(0), sequence.files(0).depth.stamp);
   for (size_t i = 0; i < sequence.size(); ++i)
     EXPECT_LT(std::abs(sequence.files(i).depth.stamp - sequence.stamp(i)), 0.02);
   const Trajectory& gt = *sequence.groundtruth();
@@ -124,6 +128,8 @@ TEST(SensorCli, EffectsSwitchOnTheCommandLineAndLensDistortionReachesTheCalibrat
   EXPECT_EQ(stamps_of(out / "rgb.txt"), stamps_of(out / "depth.txt"));
   const Camera camera = read_camera_yaml(out / "calibration.yaml");
   EXPECT_DOUBLE_EQ(camera.distortion.k1, KinectSettings().k1);
+  EXPECT_FALSE(camera.exact_depth_stamps);  // stream_timing off
+  EXPECT_GT(camera.readout_time, 0);
 
   std::string output;
   EXPECT_EQ(test::run_slamkit("synth --frames 2 --sensor kinect --sensor-off blur --out " +
@@ -142,11 +148,11 @@ TEST(SensorCli, EffectsSwitchOnTheCommandLineAndLensDistortionReachesTheCalibrat
                                           {"groundtruth_rate_hz: 0\n", "groundtruth_rate_hz"},
                                           {"effects: {blur: false}\n", "unknown sensor effect"}}) {
     std::ofstream(dir / "kinect.yaml") << text;
-    EXPECT_EQ(test::run_slamkit("synth --frames 2 --sensor kinect --sensor-settings " +
-                                    (dir / "kinect.yaml").string() + " --out " +
-                                    (dir / "out").string(),
-                                &output),
-              2)
+    EXPECT_EQ(
+        test::run_slamkit("synth --frames 2 --sensor kinect --sensor-settings " +
+                              (dir / "kinect.yaml").string() + " --out " + (dir / "out").string(),
+                          &output),
+        2)
         << text;
     EXPECT_NE(output.find(message), std::string::npos) << output;
   }

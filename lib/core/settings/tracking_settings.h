@@ -113,6 +113,9 @@ struct TrackingSettings {
   // keyframe and this many others most similar by window code (the paper's encoding used
   // for place recognition), and the best is taken: no pose prior is needed.
   int relocalisation_candidates = 3;
+  // (slamkit) Keypoints are moved to the colour stamp along the camera's velocity: the rolling
+  // shutter's skew undone (the calibration's readout_time) and depth read at its own stamp.
+  bool unroll_exposure = true;
   RansacSettings ransac;
   PointToPlaneSettings point_to_plane;
   MotionBaSettings motion_ba;
