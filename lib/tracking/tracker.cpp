@@ -48,7 +48,8 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
   } else {
     Stopwatch watch;
     const Eigen::Isometry3d guess = predict_pose(frame.stamp);
-    if (velocity_known_)  // the constant-velocity model's velocity, for matching and the solvers
+    // The constant-velocity model's velocity, for matching and the solvers (none at frame 1).
+    if (velocity_known_ && poses_.size() >= 2)
       unroll_exposure(frame, velocity_between(poses_[poses_.size() - 2], poses_.back()), guess);
     // After a failure the prediction cannot be trusted: match without it.
     std::vector<Match> matches =
