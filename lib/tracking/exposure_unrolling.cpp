@@ -2,7 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <cmath>
+
+#include "features/frame_features.h"
 
 namespace slamkit {
 namespace {
@@ -24,14 +25,6 @@ Motion motion_over(const CameraVelocity& v, double dt) {
   return m;
 }
 
-// Depth of the nearest raw pixel, 0 outside the image or where the image holds none.
-float depth_at_raw(const cv::Mat& depth, const Eigen::Vector2d& raw) {
-  const int u = int(std::lround(raw.x())), v = int(std::lround(raw.y()));
-  if (u < 0 || v < 0 || u >= depth.cols || v >= depth.rows) return 0.0f;
-  const float z = depth.at<float>(v, u);
-  return std::isfinite(z) && z > 0 ? z : 0.0f;
-}
-
 // Where a keypoint without depth is assumed to lie, for the translation's small share of its
 // motion: the frame's median keypoint depth.
 double typical_depth(const std::vector<float>& depths) {
@@ -45,7 +38,7 @@ double typical_depth(const std::vector<float>& depths) {
 
 }  // namespace
 
-UnrolledKeypoints unroll_exposure(const std::vector<float>& raw_rows,
+UnrolledKeypoints unroll_exposure(const std::vector<cv::KeyPoint>& keypoints,
                                   const std::vector<Eigen::Vector2d>& undistorted,
                                   const std::vector<float>& depths, const cv::Mat& depth_image,
                                   const Camera& camera, const ExposureTiming& timing,
@@ -57,7 +50,7 @@ UnrolledKeypoints unroll_exposure(const std::vector<float>& raw_rows,
   const Motion to_depth = motion_over(velocity, timing.depth_offset_s);
   for (size_t i = 0; i < undistorted.size(); ++i) {
     const double row_dt =
-        timing.readout_s * ((double(raw_rows[i]) + 0.5) / double(camera.height) - 0.5);
+        timing.readout_s * ((double(keypoints[i].pt.y) + 0.5) / double(camera.height) - 0.5);
     const Motion row = motion_over(velocity, row_dt);
     const double z_seen = depths[i] > 0 ? double(depths[i]) : fallback_depth;
     const Eigen::Vector3d at_stamp = row.R * camera.back_project(undistorted[i], z_seen) + row.t;
@@ -66,8 +59,9 @@ UnrolledKeypoints unroll_exposure(const std::vector<float>& raw_rows,
     // The point in the depth image's camera, its depth there, and that depth back at the stamp.
     const Eigen::Vector3d in_depth = to_depth.R.transpose() * (at_stamp - to_depth.t);
     if (in_depth.z() <= 0) continue;
-    const float z_depth = depth_at_raw(depth_image, camera.project_distorted(in_depth));
-    if (z_depth <= 0) {  // the reader zeroes depths out of the camera's range
+    const Eigen::Vector2d raw = camera.project_distorted(in_depth);
+    const float z_depth = depth_at(depth_image, cv::KeyPoint(float(raw.x()), float(raw.y()), 1));
+    if (z_depth <= 0) {  // none there (the reader zeroes depths out of the camera's range)
       out.depths[i] = 0;
       continue;
     }

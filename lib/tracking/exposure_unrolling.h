@@ -34,12 +34,12 @@ struct UnrolledKeypoints {
   std::vector<float> depths;                 // metres along those rays, 0 = none
 };
 
-// `raw_rows` are the keypoints' rows in the raw image (the sensor's rows: they set the
-// exposure time), `undistorted` and `depths` their pinhole pixels and depths as read at the raw
-// pixel. A keypoint whose depth pixel, found again at the depth image's instant, holds no valid
+// `keypoints` are at their raw (distorted) pixels, whose rows are the sensor's and set the
+// exposure time; `undistorted` and `depths` are their pinhole pixels and the depths read at the
+// raw pixel. A keypoint whose depth pixel, found again at the depth image's instant, holds no valid
 // depth keeps its pixel and loses its depth. With no motion or instant timing the input comes
 // back unchanged.
-UnrolledKeypoints unroll_exposure(const std::vector<float>& raw_rows,
+UnrolledKeypoints unroll_exposure(const std::vector<cv::KeyPoint>& keypoints,
                                   const std::vector<Eigen::Vector2d>& undistorted,
                                   const std::vector<float>& depths, const cv::Mat& depth_image,
                                   const Camera& camera, const ExposureTiming& timing,

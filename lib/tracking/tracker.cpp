@@ -383,20 +383,27 @@ Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {
   return predict_linear_velocity(velocities[0], velocities[1], poses_.back(), stamp);
 }
 
+namespace {
+
+// The velocity as exposure_unrolling.h takes it: both parts in the camera at rotation R_w_c.
+CameraVelocity in_camera(const StampedVelocity& v, const Eigen::Matrix3d& R_w_c) {
+  return {v.angular, R_w_c.transpose() * v.linear};
+}
+
+}  // namespace
+
 bool Tracker::unroll_exposure(PreparedFrame& frame, const StampedVelocity& v,
                               const Eigen::Isometry3d& T_w_c) {
   const ExposureTiming timing{camera_.readout_time, depth_offset(frame)};
   if (!settings_.tracking.unroll_exposure || timing.is_instant()) return false;
   if (seen_frame_ != frame.index) {
     seen_frame_ = frame.index;
-    seen_rows_.resize(frame.features.size());
-    for (size_t i = 0; i < seen_rows_.size(); ++i) seen_rows_[i] = frame.features.keypoints[i].pt.y;
     seen_undistorted_ = frame.features.undistorted;
     seen_depths_ = frame.keypoint_depths;
   }
-  const CameraVelocity velocity{v.angular, T_w_c.linear().transpose() * v.linear};
-  UnrolledKeypoints unrolled = slamkit::unroll_exposure(seen_rows_, seen_undistorted_, seen_depths_,
-                                                        frame.depth, camera_, timing, velocity);
+  UnrolledKeypoints unrolled =
+      slamkit::unroll_exposure(frame.features.keypoints, seen_undistorted_, seen_depths_,
+                               frame.depth, camera_, timing, in_camera(v, T_w_c.linear()));
   frame.features.undistorted = std::move(unrolled.undistorted);
   frame.keypoint_depths = std::move(unrolled.depths);
   return true;
@@ -411,12 +418,10 @@ bool Tracker::unroll_first_keyframe(const StampedVelocity& v) {
   if (!settings_.tracking.unroll_exposure || timing.is_instant() || map_.keyframes().size() != 1)
     return false;
   const Keyframe& first = map_.keyframe(0);
-  std::vector<float> rows(first.keypoints.size());
-  for (size_t i = 0; i < rows.size(); ++i) rows[i] = first.keypoints[i].pt.y;
-  const CameraVelocity velocity{v.angular, first.T_w_c.linear().transpose() * v.linear};
-  UnrolledKeypoints unrolled = slamkit::unroll_exposure(rows, first.undistorted, first.depths,
-                                                        previous_depth_, camera_, timing, velocity);
-  for (size_t i = 0; i < rows.size(); ++i) {
+  UnrolledKeypoints unrolled =
+      slamkit::unroll_exposure(first.keypoints, first.undistorted, first.depths, previous_depth_,
+                               camera_, timing, in_camera(v, first.T_w_c.linear()));
+  for (size_t i = 0; i < first.keypoints.size(); ++i) {
     const int id = first.point_ids[i];
     if (id < 0 || unrolled.depths[i] <= 0) continue;  // depth lost: the point stays as made
     map_.set_point_position(

@@ -105,7 +105,6 @@ class Tracker {
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras
   // The current frame's keypoints as prepared, before unroll_exposure moved them.
   size_t seen_frame_ = size_t(-1);
-  std::vector<float> seen_rows_;
   std::vector<Eigen::Vector2d> seen_undistorted_;
   std::vector<float> seen_depths_;
 };

@@ -66,7 +66,7 @@ struct Scene {
   CameraVelocity velocity{Eigen::Vector3d(0.3, 1.2, -0.2), Eigen::Vector3d(0.25, -0.1, 0.15)};
   ExposureTiming timing{0.030, -0.014};
   std::vector<Eigen::Vector3d> points;  // on the wall, camera-at-stamp frame
-  std::vector<float> rows;
+  std::vector<cv::KeyPoint> keypoints;  // at the seen (raw = pinhole) pixels
   std::vector<Eigen::Vector2d> seen;
   std::vector<float> depths;  // as the preparation reads them: at the seen pixel
   cv::Mat depth_image;
@@ -80,7 +80,7 @@ struct Scene {
         const int du = int(std::lround(uv.x())), dv = int(std::lround(uv.y()));
         if (du < 0 || dv < 0 || du >= camera.width || dv >= camera.height) continue;
         points.push_back(p);
-        rows.push_back(float(uv.y()));
+        keypoints.emplace_back(float(uv.x()), float(uv.y()), 31.0f);
         seen.push_back(uv);
         depths.push_back(depth_image.at<float>(dv, du));
       }
@@ -91,7 +91,7 @@ TEST(ExposureUnrolling, RecoversTheGlobalShutterViewAtTheStampUnderAKnownMotion)
   const Scene s;
   ASSERT_GT(s.points.size(), 100u);
   const UnrolledKeypoints out =
-      unroll_exposure(s.rows, s.seen, s.depths, s.depth_image, s.camera, s.timing, s.velocity);
+      unroll_exposure(s.keypoints, s.seen, s.depths, s.depth_image, s.camera, s.timing, s.velocity);
   double worst_seen_px = 0, worst_px = 0, worst_seen_depth = 0, worst_depth = 0;
   for (size_t i = 0; i < s.points.size(); ++i) {
     const Eigen::Vector2d truth = s.camera.project(s.points[i]);
@@ -113,12 +113,12 @@ TEST(ExposureUnrolling, RecoversTheGlobalShutterViewAtTheStampUnderAKnownMotion)
 
 TEST(ExposureUnrolling, InstantTimingOrNoMotionLeavesTheKeypointsAsSeen) {
   const Scene s;
-  const UnrolledKeypoints instant = unroll_exposure(s.rows, s.seen, s.depths, s.depth_image,
+  const UnrolledKeypoints instant = unroll_exposure(s.keypoints, s.seen, s.depths, s.depth_image,
                                                     s.camera, ExposureTiming{}, s.velocity);
   EXPECT_EQ(instant.undistorted, s.seen);
   EXPECT_EQ(instant.depths, s.depths);
   const UnrolledKeypoints still =
-      unroll_exposure(s.rows, s.seen, s.depths, s.depth_image, s.camera, s.timing, {});
+      unroll_exposure(s.keypoints, s.seen, s.depths, s.depth_image, s.camera, s.timing, {});
   for (size_t i = 0; i < s.seen.size(); ++i) {
     EXPECT_LT((still.undistorted[i] - s.seen[i]).norm(), 1e-9);
     EXPECT_NEAR(still.depths[i], s.depths[i], 1e-6);
@@ -129,7 +129,7 @@ TEST(ExposureUnrolling, AKeypointWhoseDepthPixelHoldsNoneLosesItsDepthButKeepsIt
   Scene s;
   s.depth_image.setTo(0);
   const UnrolledKeypoints out =
-      unroll_exposure(s.rows, s.seen, s.depths, s.depth_image, s.camera, s.timing, s.velocity);
+      unroll_exposure(s.keypoints, s.seen, s.depths, s.depth_image, s.camera, s.timing, s.velocity);
   for (size_t i = 0; i < s.points.size(); ++i) {
     EXPECT_EQ(out.depths[i], 0.0f);
     // The pixel still moves, on the depths the preparation read.
