@@ -172,6 +172,8 @@ void visit_fields(TrackingSettings& s, V& v) {
           from_slamkit("matched points that bound dense alignment's co-visible box"));
   v.field("relocalisation_candidates", s.relocalisation_candidates, at_least(0),
           from_slamkit("keyframes most alike by window code tried after a lost frame"));
+  v.field("relocalisation_min_inliers", s.relocalisation_min_inliers, at_least(3),
+          from_orb_slam2("inliers whose pose seeds a projection search after a lost frame"));
   v.field("unroll_exposure", s.unroll_exposure,
           from_slamkit("keypoints moved to the colour stamp: rolling shutter, depth stamps"));
   v.section("ransac", s.ransac, "closed-form SVD alignment of 3D-3D pairs inside RANSAC");

@@ -20,6 +20,17 @@
 #include "tracking/point_to_plane.h"
 
 namespace slamkit {
+namespace {
+
+// The matches whose keypoint has a depth: the 3D-3D pairs the closed form can use.
+template <class Match>
+int pairs_with_depth(const PreparedFrame& frame, const std::vector<Match>& matches) {
+  return int(std::count_if(matches.begin(), matches.end(), [&](const Match& m) {
+    return frame.keypoint_depths[size_t(m.keypoint)] > 0;
+  }));
+}
+
+}  // namespace
 
 Tracker::Tracker(const Camera& camera, const Settings& settings, Map& map)
     : camera_(camera), settings_(settings), map_(map) {
@@ -47,27 +58,20 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
     voted_keyframes_.clear();
   } else {
     Stopwatch watch;
-    const Eigen::Isometry3d guess = predict_pose(frame.stamp);
+    Eigen::Isometry3d guess = predict_pose(frame.stamp);
     // The constant-velocity model's velocity, for matching and the solvers (none at frame 1).
     if (velocity_known_ && poses_.size() >= 2)
       unroll_exposure(frame, velocity_between(poses_[poses_.size() - 2], poses_.back()), guess);
     // After a failure the prediction cannot be trusted: match without it.
-    std::vector<Match> matches =
-        previous_lost_ ? match_for_relocalisation(frame) : match_local_map(frame, guess);
+    std::vector<Match> matches = previous_lost_ ? relocalise(frame, guess)
+                                                : match_local_map(frame, guess, voted_keyframes());
     record.matches = int(matches.size());
     record.match_ms = watch.lap();
 
     PoseEstimate estimate = estimate_pose(frame, matches, guess, record);
     record.pose_ms = watch.lap();
     if (estimate.ok) refine_pose(frame, estimate, record);
-    // Again with the velocity into this frame, which the refined pose now gives (after a
-    // failure, the mean velocity since the last tracked frame).
-    if (estimate.ok && record.refined) {
-      const StampedVelocity v = velocity_between(last_tracked_, {frame.stamp, estimate.T_w_c});
-      const bool first_moved = poses_.size() == 1 && unroll_first_keyframe(v);
-      if (unroll_exposure(frame, v, estimate.T_w_c) || first_moved)
-        refine_pose(frame, estimate, record);
-    }
+    if (estimate.ok && record.refined) refine_unrolled(frame, estimate, record);
     record.refine_ms = watch.lap();
 
     if (estimate.ok) estimate.ok = accept(frame, estimate, record);
@@ -104,9 +108,9 @@ Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
   return predict_constant_velocity(poses_[poses_.size() - 2], poses_.back(), stamp);
 }
 
-std::vector<int> Tracker::keyframes_by_votes() const {
+std::vector<int> Tracker::keyframes_by_votes(const std::vector<Match>& voters) const {
   std::map<int, int> votes;
-  for (const Match& m : inliers_)
+  for (const Match& m : voters)
     for (const Observation& o : map_.point(m.point_id).observations) ++votes[o.keyframe];
   std::vector<std::pair<int, int>> ranked;  // (-votes, keyframe)
   for (const auto& [k, count] : votes) ranked.push_back({-count, k});
@@ -116,14 +120,17 @@ std::vector<int> Tracker::keyframes_by_votes() const {
   return keyframes;
 }
 
-std::vector<int> Tracker::local_keyframes() const {
-  // ORB-SLAM2's UpdateLocalKeyFrames: the keyframes that observe the last frame's points,
-  // most shared first, then their best covisible neighbours, up to the setting's count. The
-  // votes counted for the last frame stand unless a keyframe came in since (its insertion
+std::vector<int> Tracker::voted_keyframes() const {
+  // The votes counted for the last frame stand unless a keyframe came in since (its insertion
   // changes the observations).
+  return voted_at_keyframes_ == map_.keyframes().size() ? voted_keyframes_
+                                                         : keyframes_by_votes(inliers_);
+}
+
+std::vector<int> Tracker::local_keyframes(const std::vector<int>& voted) const {
+  // ORB-SLAM2's UpdateLocalKeyFrames: the keyframes that observe the matched points, most
+  // shared first, then their best covisible neighbours, up to the setting's count.
   const size_t limit = size_t(std::max(1, settings_.mapping.local_map_keyframes));
-  const std::vector<int> voted =
-      voted_at_keyframes_ == map_.keyframes().size() ? voted_keyframes_ : keyframes_by_votes();
   std::vector<int> local;
   auto add = [&](int k) {
     if (local.size() < limit && std::find(local.begin(), local.end(), k) == local.end())
@@ -137,7 +144,8 @@ std::vector<int> Tracker::local_keyframes() const {
 }
 
 std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
-                                                     const Eigen::Isometry3d& T_w_c_guess) {
+                                                     const Eigen::Isometry3d& T_w_c_guess,
+                                                     const std::vector<int>& voted) {
   // The local map's points that the predicted view can see (ORB-SLAM2's isInFrustum: in front,
   // in the image, within the scale-valid distances, seen within 60 deg of their mean view),
   // each searched at the pyramid level its distance predicts.
@@ -146,7 +154,7 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
   point_mark_.resize(map_.points().size(), size_t(-1));
   std::vector<int> ids;
   MapPointSet points;
-  for (int k : local_keyframes())
+  for (int k : local_keyframes(voted))
     for (int id : map_.keyframe(k).point_ids) {
       if (id < 0 || point_mark_[size_t(id)] == frame.index) continue;
       point_mark_[size_t(id)] = frame.index;
@@ -222,6 +230,24 @@ std::vector<Tracker::Match> Tracker::match_for_relocalisation(const PreparedFram
   return best;
 }
 
+std::vector<Tracker::Match> Tracker::relocalise(const PreparedFrame& frame,
+                                                Eigen::Isometry3d& guess) {
+  // ORB-SLAM2's Relocalization: descriptor matches to the candidate keyframes are often too
+  // few to be judged on their own (a blurred frame matches few), but a pose from a handful
+  // of them places the frame well enough to search the map around it by projection, which
+  // finds the many matches the pose is then judged on. Without a seed, the matches stand.
+  std::vector<Match> matches = match_for_relocalisation(frame);
+  const int pairs = pairs_with_depth(frame, matches);
+  if (pairs >= settings_.tracking.min_pairs_for_svd ||
+      pairs < settings_.tracking.relocalisation_min_inliers)
+    return matches;
+  const PoseEstimate seed = align_svd_ransac(frame, matches, guess);
+  if (!seed.ok || seed.support < settings_.tracking.relocalisation_min_inliers) return matches;
+  guess = seed.T_w_c;
+  std::vector<Match> searched = match_local_map(frame, guess, keyframes_by_votes(seed.inliers));
+  return searched.size() > matches.size() ? searched : matches;
+}
+
 bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate,
                      const TrackedFrame& record) const {
   // Re-acquired against the map after a failure: the map vouches for the pose, and its jump
@@ -246,9 +272,7 @@ Tracker::PoseEstimate Tracker::estimate_pose(const PreparedFrame& frame,
                                              const std::vector<Match>& matches,
                                              const Eigen::Isometry3d& T_w_c_guess,
                                              TrackedFrame& record) const {
-  record.pairs_3d = int(std::count_if(matches.begin(), matches.end(), [&](const Match& m) {
-    return frame.keypoint_depths[size_t(m.keypoint)] > 0;
-  }));
+  record.pairs_3d = pairs_with_depth(frame, matches);
   if (record.pairs_3d >= settings_.tracking.min_pairs_for_svd) {
     record.solver = PoseSolver::kSvdRansac;
     PoseEstimate estimate = align_svd_ransac(frame, matches, T_w_c_guess);
@@ -343,6 +367,22 @@ Tracker::PoseEstimate Tracker::align_point_to_plane(const PreparedFrame& frame,
   return estimate;
 }
 
+void Tracker::refine_unrolled(PreparedFrame& frame, PoseEstimate& estimate,
+                              TrackedFrame& record) {
+  const StampedVelocity v = velocity_between(last_tracked_, {frame.stamp, estimate.T_w_c});
+  const bool first_moved = poses_.size() == 1 && unroll_first_keyframe(v);
+  // After a failure v is the mean velocity since the last tracked frame. Across a smooth
+  // motion that is the velocity here; across a whip of the camera (kinect jerk: 12 rad/s
+  // between frames moving at 0.3 rad/s) it is nothing like it. A mean above the failure
+  // check's speed limits is such a case: the frame is not moved by it.
+  const FailureSettings& limits = settings_.tracking.failure;
+  if (previous_lost_ && (v.linear.norm() > limits.max_speed ||
+                         v.angular.norm() > limits.max_angular_speed_deg * M_PI / 180))
+    return;
+  if (unroll_exposure(frame, v, estimate.T_w_c) || first_moved)
+    refine_pose(frame, estimate, record);
+}
+
 void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
                           TrackedFrame& record) const {
   const MotionBaSettings& ba = settings_.tracking.motion_ba;
@@ -435,7 +475,7 @@ bool Tracker::unroll_first_keyframe(const StampedVelocity& v) {
 void Tracker::settle_inliers(const std::vector<Match>& inliers, TrackedFrame& record) {
   inliers_ = inliers;
   for (const Match& m : inliers_) map_.count_found(m.point_id);
-  voted_keyframes_ = keyframes_by_votes();
+  voted_keyframes_ = keyframes_by_votes(inliers_);
   voted_at_keyframes_ = map_.keyframes().size();
   if (!voted_keyframes_.empty()) reference_keyframe_ = voted_keyframes_.front();
   if (reference_keyframe_ < 0) reference_keyframe_ = int(map_.keyframes().size()) - 1;

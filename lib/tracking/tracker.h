@@ -50,13 +50,20 @@ class Tracker {
   };
 
   Eigen::Isometry3d predict_pose(double stamp) const;
-  // The keyframes observing the last frame's inliers, most of them first (then lowest index).
-  std::vector<int> keyframes_by_votes() const;
-  std::vector<int> local_keyframes() const;
+  // The keyframes observing the voters' points, most of them first (then lowest index).
+  std::vector<int> keyframes_by_votes(const std::vector<Match>& voters) const;
+  // keyframes_by_votes of the last frame's inliers.
+  std::vector<int> voted_keyframes() const;
+  std::vector<int> local_keyframes(const std::vector<int>& voted) const;
+  // The points of the voted keyframes' neighbourhood (local_keyframes) matched by projection
+  // from the pose guess.
   std::vector<Match> match_local_map(const PreparedFrame& frame,
-                                     const Eigen::Isometry3d& T_w_c_guess);
+                                     const Eigen::Isometry3d& T_w_c_guess,
+                                     const std::vector<int>& voted);
   std::vector<Match> match_keyframe(const PreparedFrame& frame, const Keyframe& keyframe) const;
   std::vector<Match> match_for_relocalisation(const PreparedFrame& frame) const;
+  // The matches of a frame after a lost one; guess becomes the pose they were searched from.
+  std::vector<Match> relocalise(const PreparedFrame& frame, Eigen::Isometry3d& guess);
   bool accept(const PreparedFrame& frame, PoseEstimate& estimate, const TrackedFrame& record) const;
   PoseEstimate estimate_pose(const PreparedFrame& frame, const std::vector<Match>& matches,
                              const Eigen::Isometry3d& T_w_c_guess, TrackedFrame& record) const;
@@ -65,6 +72,9 @@ class Tracker {
   PoseEstimate align_point_to_plane(const PreparedFrame& frame, const std::vector<Match>& matches,
                                     const Eigen::Isometry3d& T_w_c_guess) const;
   void refine_pose(const PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record) const;
+  // The second pass: the frame unrolled with the velocity into it, which the refined pose now
+  // gives, and refined again (the first keyframe too, at frame 1).
+  void refine_unrolled(PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record);
   Eigen::Isometry3d motion_model_pose(double stamp) const;
   // Moves the frame's keypoints, as the preparation found them, to its colour stamp along
   // velocity v (velocity_between) at pose T_w_c. False, and nothing moved, for instant timing.

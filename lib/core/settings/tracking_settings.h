@@ -113,6 +113,10 @@ struct TrackingSettings {
   // keyframe and this many others most similar by window code (the paper's encoding used
   // for place recognition), and the best is taken: no pose prior is needed.
   int relocalisation_candidates = 3;
+  // (ORB-SLAM2) Inliers of those descriptor matches that seed a projection search of the
+  // map from their pose, when they are too few to be judged on (ORB-SLAM2's Relocalization
+  // solves PnP from 15 matches).
+  int relocalisation_min_inliers = 15;
   // (slamkit) Keypoints are moved to the colour stamp along the camera's velocity: the rolling
   // shutter's skew undone (the calibration's readout_time) and depth read at its own stamp.
   bool unroll_exposure = true;
