@@ -58,23 +58,15 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
     voted_keyframes_.clear();
   } else {
     Stopwatch watch;
-    Eigen::Isometry3d guess = predict_pose(frame.stamp);
-    // The constant-velocity model's velocity, for matching and the solvers (none at frame 1).
-    if (velocity_known_ && poses_.size() >= 2)
-      unroll_exposure(frame, velocity_between(poses_[poses_.size() - 2], poses_.back()), guess);
-    // After a failure the prediction cannot be trusted: match without it.
-    std::vector<Match> matches = previous_lost_ ? relocalise(frame, guess)
-                                                : match_local_map(frame, guess, voted_keyframes());
-    record.matches = int(matches.size());
-    record.match_ms = watch.lap();
-
-    PoseEstimate estimate = estimate_pose(frame, matches, guess, record);
-    record.pose_ms = watch.lap();
-    if (estimate.ok) refine_pose(frame, estimate, record);
-    if (estimate.ok && record.refined) refine_unrolled(frame, estimate, record);
-    record.refine_ms = watch.lap();
-
-    if (estimate.ok) estimate.ok = accept(frame, estimate, record);
+    reacquiring_ = previous_lost_;
+    PoseEstimate estimate = attempt(frame, record, watch);
+    // ORB-SLAM2 tracks with the reference keyframe when its motion model fails: here the frame
+    // is re-acquired against the map at once, as the frame after a lost one would be.
+    if (!estimate.ok && !reacquiring_) {
+      reacquiring_ = true;
+      PoseEstimate second = attempt(frame, record, watch);
+      if (second.ok) estimate = std::move(second);
+    }
     if (!estimate.ok) {
       record.lost = true;
       record.failure = estimate.failure;
@@ -86,9 +78,9 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
     settle_inliers(record.lost ? std::vector<Match>{} : estimate.inliers, record);
     previous_surfaces_ = std::move(estimate.surfaces);
     previous_grey_pyramid_ = std::move(estimate.grey);
-    // A frame re-acquired after a failure was matched to one keyframe, not the local map: its
-    // pose is the least reliable, and a keyframe made from it would carry that into the map.
-    if (!record.lost && !previous_lost_) choose_keyframe(frame, record);
+    // A re-acquired frame was matched to one keyframe, not the local map: its pose is the
+    // least reliable, and a keyframe made from it would carry that into the map.
+    if (!record.lost && !reacquiring_) choose_keyframe(frame, record);
     record.keyframe_ms = watch.lap();
   }
   poses_.push_back({frame.stamp, record.T_w_c});
@@ -99,6 +91,28 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
   velocity_known_ = !record.lost && !previous_lost_;
   previous_lost_ = record.lost;
   return record;
+}
+
+Tracker::PoseEstimate Tracker::attempt(PreparedFrame& frame, TrackedFrame& record,
+                                       Stopwatch& watch) {
+  record.refined = false;
+  Eigen::Isometry3d guess = predict_pose(frame.stamp);
+  // The constant-velocity model's velocity, for matching and the solvers (none at frame 1).
+  if (!reacquiring_ && velocity_known_ && poses_.size() >= 2)
+    unroll_exposure(frame, velocity_between(poses_[poses_.size() - 2], poses_.back()), guess);
+  // Re-acquiring, the prediction cannot be trusted: match without it.
+  std::vector<Match> matches = reacquiring_ ? relocalise(frame, guess)
+                                            : match_local_map(frame, guess, voted_keyframes());
+  record.matches = int(matches.size());
+  record.match_ms += watch.lap();
+
+  PoseEstimate estimate = estimate_pose(frame, matches, guess, record);
+  record.pose_ms += watch.lap();
+  if (estimate.ok) refine_pose(frame, estimate, record);
+  if (estimate.ok && record.refined) refine_unrolled(frame, estimate, record);
+  record.refine_ms += watch.lap();
+  if (estimate.ok) estimate.ok = accept(frame, estimate, record);
+  return estimate;
 }
 
 Eigen::Isometry3d Tracker::predict_pose(double stamp) const {
@@ -178,7 +192,7 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
   const KeypointGrid grid(frame.features.undistorted, settings_.matcher.grid_cell_size);
   MatcherSettings matcher = settings_.matcher;
   // After a failure the prediction is poor: search a wider window (ORB-SLAM2 widens too).
-  if (previous_lost_) matcher.projection_radius *= settings_.tracking.lost_search_radius_factor;
+  if (reacquiring_) matcher.projection_radius *= settings_.tracking.lost_search_radius_factor;
   std::vector<Match> matches;
   for (const ProjectionMatch& m :
        match_by_projection(points, T_w_c_guess, camera_, frame.features, grid, matcher))
@@ -250,12 +264,15 @@ std::vector<Tracker::Match> Tracker::relocalise(const PreparedFrame& frame,
 
 bool Tracker::accept(const PreparedFrame& frame, PoseEstimate& estimate,
                      const TrackedFrame& record) const {
-  // Re-acquired against the map after a failure: the map vouches for the pose, and its jump
-  // from the (motion model) pose before says nothing.
-  if (previous_lost_ && record.solver == PoseSolver::kSvdRansac) {
-    if (estimate.support >= settings_.tracking.min_pairs_for_svd) return true;
-    estimate.failure = "not re-acquired: too few inliers";
-    return false;
+  // Re-acquired against the map: the map vouches for the pose. After a lost frame its jump
+  // from the (motion model) pose before says nothing; re-acquired in the frame whose tracking
+  // failed, the pose before was tracked and the speed limits hold as for any frame.
+  if (reacquiring_ && record.solver == PoseSolver::kSvdRansac) {
+    if (estimate.support < settings_.tracking.min_pairs_for_svd) {
+      estimate.failure = "not re-acquired: too few inliers";
+      return false;
+    }
+    if (previous_lost_) return true;
   }
   const PoseSupport support{estimate.support, record.refined, int(estimate.inliers.size()),
                             record.matches};
@@ -376,7 +393,7 @@ void Tracker::refine_unrolled(PreparedFrame& frame, PoseEstimate& estimate,
   // between frames moving at 0.3 rad/s) it is nothing like it. A mean above the failure
   // check's speed limits is such a case: the frame is not moved by it.
   const FailureSettings& limits = settings_.tracking.failure;
-  if (previous_lost_ && (v.linear.norm() > limits.max_speed ||
+  if (reacquiring_ && (v.linear.norm() > limits.max_speed ||
                          v.angular.norm() > limits.max_angular_speed_deg * M_PI / 180))
     return;
   if (unroll_exposure(frame, v, estimate.T_w_c) || first_moved)

@@ -9,6 +9,7 @@
 
 #include "core/camera.h"
 #include "core/settings/settings.h"
+#include "core/stopwatch.h"
 #include "core/trajectory.h"
 #include "map/map.h"
 #include "tracking/motion_model.h"
@@ -49,6 +50,9 @@ class Tracker {
     GreyPyramid grey;         // likewise, when it weighed grey levels too
   };
 
+  // Matches the frame, solves, refines and checks its pose (the failure check); the lap
+  // times go into the record.
+  PoseEstimate attempt(PreparedFrame& frame, TrackedFrame& record, Stopwatch& watch);
   Eigen::Isometry3d predict_pose(double stamp) const;
   // The keyframes observing the voters' points, most of them first (then lowest index).
   std::vector<int> keyframes_by_votes(const std::vector<Match>& voters) const;
@@ -111,6 +115,9 @@ class Tracker {
   SurfacePyramid previous_surfaces_;   // the previous frame's, if dense alignment built them
   GreyPyramid previous_grey_pyramid_;  // likewise
   bool previous_lost_ = false;
+  // This frame is matched without a prediction: after a lost frame, or when tracking with the
+  // prediction failed.
+  bool reacquiring_ = false;
   bool velocity_known_ = false;  // the last two frames were tracked, not lost or re-acquired
   cv::Mat undistort_map_x_, undistort_map_y_;  // depth remap for distorted cameras
   // The current frame's keypoints as prepared, before unroll_exposure moved them.

@@ -36,14 +36,15 @@ inline std::string renderer_build_key() {
   return key.str();
 }
 
-// Seed 1, through the ideal sensor or the kinect one with its default settings.
+// Through the ideal sensor or the kinect one with its default settings.
 inline std::filesystem::path synthetic_sequence(synth::Preset preset, int frames,
-                                                bool kinect = false) {
+                                                bool kinect = false, uint64_t seed = 1) {
   namespace fs = std::filesystem;
   const fs::path base = SLAMKIT_TEST_SEQUENCES;
   const fs::path root = base / renderer_build_key();
-  const fs::path dir =
-      root / (synth::preset_name(preset) + std::to_string(frames) + (kinect ? "_kinect" : ""));
+  const fs::path dir = root / (synth::preset_name(preset) + std::to_string(frames) +
+                               (kinect ? "_kinect" : "") +
+                               (seed == 1 ? "" : "_seed" + std::to_string(seed)));
   if (fs::exists(dir)) return dir;
 
   std::error_code ignored;
@@ -61,6 +62,7 @@ inline std::filesystem::path synthetic_sequence(synth::Preset preset, int frames
     spec.preset = preset;
     spec.frames = frames;
     spec.out = partial;
+    spec.seed = seed;
     if (kinect) spec.kinect = synth::KinectSettings{};
     synth::write_sequence(synth::make_named_scene(synth::preset_scene(preset)), spec);
     fs::rename(partial, dir);
