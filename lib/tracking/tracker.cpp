@@ -54,6 +54,8 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
 
   if (poses_.empty()) {  // the first frame defines the world frame and the first keyframe
     record.keyframe = true;
+    first_seen_undistorted_ = frame.features.undistorted;
+    first_seen_depths_ = frame.keypoint_depths;
     inliers_.clear();
     voted_keyframes_.clear();
   } else {
@@ -476,8 +478,8 @@ bool Tracker::unroll_first_keyframe(const StampedVelocity& v) {
     return false;
   const Keyframe& first = map_.keyframe(0);
   UnrolledKeypoints unrolled =
-      slamkit::unroll_exposure(first.keypoints, first.undistorted, first.depths, previous_depth_,
-                               camera_, timing, in_camera(v, first.T_w_c.linear()));
+      slamkit::unroll_exposure(first.keypoints, first_seen_undistorted_, first_seen_depths_,
+                               previous_depth_, camera_, timing, in_camera(v, first.T_w_c.linear()));
   for (size_t i = 0; i < first.keypoints.size(); ++i) {
     const int id = first.point_ids[i];
     if (id < 0 || unrolled.depths[i] <= 0) continue;  // depth lost: the point stays as made

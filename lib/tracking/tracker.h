@@ -124,6 +124,10 @@ class Tracker {
   size_t seen_frame_ = size_t(-1);
   std::vector<Eigen::Vector2d> seen_undistorted_;
   std::vector<float> seen_depths_;
+  // The first keyframe's, likewise: unroll_first_keyframe may run twice at frame 1 (once per
+  // attempt) and must move them once, by the last velocity.
+  std::vector<Eigen::Vector2d> first_seen_undistorted_;
+  std::vector<float> first_seen_depths_;
 };
 
 }  // namespace slamkit
