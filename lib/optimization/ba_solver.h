@@ -18,7 +18,8 @@ namespace slamkit {
 
 class BaSolver {
  public:
-  // Copies the parameters out of `problem` (which is only read again by write_back). At the
+  // Copies the parameters out of `problem`, and reads its observations where they are (on a
+  // long map they are tens of MB): `problem` must outlive the solver. At the
   // start every observation whose point is in front of its camera is an inlier (ORB-SLAM2
   // starts with every edge; one behind the camera cannot be evaluated). Throws
   // std::invalid_argument when an observation names a pose or point that does not exist or
@@ -64,7 +65,7 @@ class BaSolver {
   // The observation's chi2 at the current parameters; false when it cannot be evaluated.
   bool chi2(int observation, double& value) const;
 
-  std::vector<BaObservation> observations_;
+  const std::vector<BaObservation>& observations_;  // problem.observations, not a copy
   std::vector<bool> pose_fixed_;
   int num_poses_;
   int num_points_;
