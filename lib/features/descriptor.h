@@ -1,11 +1,15 @@
 #pragma once
 // Steered BRIEF descriptors (docs/method.md#features).
 #include <opencv2/core.hpp>
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace slamkit {
 
 constexpr int kDescriptorBytes = 32;  // 256 bits
+// One descriptor held by value (a map point's, a vocabulary node's).
+using Descriptor = std::array<uint8_t, kDescriptorBytes>;
 
 // Steered BRIEF, 256 bits, with ORB's learned pattern, on `level_image` smoothed by a 7x7
 // Gaussian of sigma 2, rotated by each keypoint's angle. Keypoints are in level_image pixels;

@@ -50,7 +50,7 @@ std::vector<LoopPointMatch> match_loop_neighbourhood(const Map& map, int keyfram
       const int level = k.keypoints[size_t(c)].octave;
       if (taken[size_t(c)] || level < projection->octave - 1 || level > projection->octave)
         continue;
-      const int d = descriptor_distance(p.descriptor.ptr<uchar>(), k.descriptors.ptr<uchar>(c));
+      const int d = descriptor_distance(p.descriptor.data(), k.descriptors.ptr<uchar>(c));
       if (d < closest || (d == closest && c < closest_keypoint)) closest = d, closest_keypoint = c;
     }
     if (closest_keypoint < 0 || closest > max_distance) continue;

@@ -69,7 +69,7 @@ void Map::cull_point(int point) {
   MapPoint& p = points_[size_t(point)];
   for (const Observation& o : p.observations)
     keyframes_[size_t(o.keyframe)].point_ids[size_t(o.keypoint)] = -1;
-  p.observations.clear();
+  p.observations = {};  // the id stays for good: give its storage back
   p.bad = true;
 }
 
@@ -90,7 +90,7 @@ void Map::replace_point(int duplicate, int survivor) {
   }
   kept.visible += dup.visible;
   kept.found += dup.found;
-  dup.observations.clear();
+  dup.observations = {};
   dup.bad = true;
   update_point_descriptor(survivor);
 }
@@ -245,8 +245,7 @@ void Map::update_point_descriptor(int point) {
     const int median = row[(n - 1) / 2];
     if (median < best_median) best_median = median, best = i;
   }
-  p.descriptor.create(1, kDescriptorBytes, CV_8U);
-  std::copy_n(descriptors[best], kDescriptorBytes, p.descriptor.ptr<uchar>());
+  std::copy_n(descriptors[best], kDescriptorBytes, p.descriptor.begin());
 }
 
 void Map::update_point_geometry(int point) {

@@ -3,8 +3,9 @@
 // needs to find it again (as ORB-SLAM2's map points keep it;
 // docs/method.md#local-mapping-and-bundle-adjustment).
 #include <Eigen/Core>
-#include <opencv2/core.hpp>
 #include <vector>
+
+#include "features/descriptor.h"
 
 namespace slamkit {
 
@@ -16,7 +17,9 @@ struct Observation {
 struct MapPoint {
   Eigen::Vector3d p_w = Eigen::Vector3d::Zero();  // world position, metres
   // The observation descriptor with the least median Hamming distance to the others.
-  cv::Mat descriptor;                     // 1 x 32 CV_8U
+  // Held by value: a map keeps every point id ever made (culled ones too), and a cv::Mat per
+  // point cost 96 bytes in the slot and about 100 on the heap.
+  Descriptor descriptor{};
   std::vector<Observation> observations;  // one per keyframe, in insertion order
   int reference_keyframe = -1;            // the keyframe that created it
   int octave = 0;                         // of its keypoint in the reference keyframe

@@ -42,7 +42,7 @@ std::vector<int> fuse_into_keyframe(Map& map, int keyframe, const std::vector<in
       } else if (error2 * inv_sigma2 > gates.chi2_2d) {
         continue;
       }
-      const int d = descriptor_distance(p.descriptor.ptr<uchar>(), k.descriptors.ptr<uchar>(c));
+      const int d = descriptor_distance(p.descriptor.data(), k.descriptors.ptr<uchar>(c));
       if (d < best) best = d, best_keypoint = c;
     }
     if (best_keypoint < 0 || best > gates.max_distance) continue;

@@ -189,7 +189,7 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
     }
   points.descriptors.create(int(ids.size()), kDescriptorBytes, CV_8U);
   for (size_t k = 0; k < ids.size(); ++k)
-    std::copy_n(map_.point(ids[k]).descriptor.ptr<uchar>(), kDescriptorBytes,
+    std::copy_n(map_.point(ids[k]).descriptor.data(), kDescriptorBytes,
                 points.descriptors.ptr<uchar>(int(k)));
   const KeypointGrid grid(frame.features.undistorted, settings_.matcher.grid_cell_size);
   MatcherSettings matcher = settings_.matcher;
