@@ -3,12 +3,58 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "features/descriptor.h"
 
 namespace slamkit {
 
 double PyramidGeometry::scale(int octave) const { return std::pow(scale_factor, octave); }
+
+namespace {
+const MapPoint kReleasedPoint = [] {
+  MapPoint p;
+  p.bad = true;
+  return p;
+}();
+}  // namespace
+
+Map::Map(const Map& other)
+    : pyramid_(other.pyramid_),
+      covisibility_min_shared_(other.covisibility_min_shared_),
+      keyframes_(other.keyframes_) {
+  points_.reserve(other.points_.size());
+  for (const std::unique_ptr<MapPoint>& p : other.points_)
+    points_.push_back(p ? std::make_unique<MapPoint>(*p) : nullptr);
+}
+
+Map& Map::operator=(const Map& other) {
+  if (this != &other) *this = Map(other);
+  return *this;
+}
+
+const MapPoint& Map::point(int id) const {
+  const std::unique_ptr<MapPoint>& p = points_[size_t(id)];
+  return p ? *p : kReleasedPoint;
+}
+
+MapPoint& Map::live(int id) {
+  if (!points_[size_t(id)])
+    throw std::logic_error("map point " + std::to_string(id) + " was culled or merged away");
+  return *points_[size_t(id)];
+}
+
+void Map::release(int id) { points_[size_t(id)].reset(); }
+
+void Map::set_point_position(int point, const Eigen::Vector3d& p_w) {
+  if (points_[size_t(point)]) points_[size_t(point)]->p_w = p_w;
+}
+void Map::count_visible(int point) {
+  if (points_[size_t(point)]) ++points_[size_t(point)]->visible;
+}
+void Map::count_found(int point) {
+  if (points_[size_t(point)]) ++points_[size_t(point)]->found;
+}
 
 int Map::add_keyframe(Keyframe keyframe) {
   const int id = static_cast<int>(keyframes_.size());
@@ -19,7 +65,7 @@ int Map::add_keyframe(Keyframe keyframe) {
     const int point = k.point_ids[i];
     if (point < 0) continue;
     k.point_ids[i] = -1;  // add_observation links it again, unless the point is gone
-    if (!points_[size_t(point)].bad) add_observation(point, id, static_cast<int>(i));
+    if (!this->point(point).bad) add_observation(point, id, static_cast<int>(i));
   }
   return id;
 }
@@ -30,7 +76,7 @@ int Map::add_point(const Eigen::Vector3d& p_w, int keyframe, int keypoint) {
   point.p_w = p_w;
   point.reference_keyframe = keyframe;
   point.octave = keyframes_[size_t(keyframe)].keypoints[size_t(keypoint)].octave;
-  points_.push_back(std::move(point));
+  points_.push_back(std::make_unique<MapPoint>(std::move(point)));
   add_observation(id, keyframe, keypoint);
   update_point_descriptor(id);
   update_point_geometry(id);
@@ -38,7 +84,7 @@ int Map::add_point(const Eigen::Vector3d& p_w, int keyframe, int keypoint) {
 }
 
 void Map::add_observation(int point, int keyframe, int keypoint) {
-  MapPoint& p = points_[size_t(point)];
+  MapPoint& p = live(point);
   for (const Observation& o : p.observations)
     if (o.keyframe == keyframe) return;  // one observation per keyframe
   int& link = keyframes_[size_t(keyframe)].point_ids[size_t(keypoint)];
@@ -48,14 +94,15 @@ void Map::add_observation(int point, int keyframe, int keypoint) {
 }
 
 void Map::erase_observation(int point, int keyframe) {
-  MapPoint& p = points_[size_t(point)];
+  if (!points_[size_t(point)]) return;  // culled: nothing left to erase
+  MapPoint& p = *points_[size_t(point)];
   const auto it = std::find_if(p.observations.begin(), p.observations.end(),
                                [&](const Observation& o) { return o.keyframe == keyframe; });
   if (it == p.observations.end()) return;
   keyframes_[size_t(keyframe)].point_ids[size_t(it->keypoint)] = -1;
   p.observations.erase(it);
   if (p.observations.empty()) {
-    p.bad = true;
+    release(point);
     return;
   }
   if (p.reference_keyframe == keyframe) {
@@ -66,17 +113,16 @@ void Map::erase_observation(int point, int keyframe) {
 }
 
 void Map::cull_point(int point) {
-  MapPoint& p = points_[size_t(point)];
-  for (const Observation& o : p.observations)
+  if (!points_[size_t(point)]) return;
+  for (const Observation& o : points_[size_t(point)]->observations)
     keyframes_[size_t(o.keyframe)].point_ids[size_t(o.keypoint)] = -1;
-  p.observations = {};  // the id stays for good: give its storage back
-  p.bad = true;
+  release(point);
 }
 
 void Map::replace_point(int duplicate, int survivor) {
-  if (duplicate == survivor) return;
-  MapPoint& dup = points_[size_t(duplicate)];
-  MapPoint& kept = points_[size_t(survivor)];
+  if (duplicate == survivor || !points_[size_t(duplicate)]) return;
+  MapPoint& dup = *points_[size_t(duplicate)];
+  MapPoint& kept = live(survivor);
   for (const Observation& o : dup.observations) {
     int& link = keyframes_[size_t(o.keyframe)].point_ids[size_t(o.keypoint)];
     const bool seen = std::any_of(kept.observations.begin(), kept.observations.end(),
@@ -90,8 +136,7 @@ void Map::replace_point(int duplicate, int survivor) {
   }
   kept.visible += dup.visible;
   kept.found += dup.found;
-  dup.observations = {};
-  dup.bad = true;
+  release(duplicate);
   update_point_descriptor(survivor);
 }
 
@@ -101,7 +146,7 @@ void Map::update_connections(int keyframe) {
   std::vector<int> count(keyframes_.size(), 0);
   for (int point : k.point_ids) {
     if (point < 0) continue;
-    for (const Observation& o : points_[size_t(point)].observations)
+    for (const Observation& o : this->point(point).observations)
       if (o.keyframe != keyframe) ++count[size_t(o.keyframe)];
   }
   std::map<int, int> shared;
@@ -217,7 +262,8 @@ void Map::sort_covisible(int keyframe) {
 }
 
 void Map::update_point_descriptor(int point) {
-  MapPoint& p = points_[size_t(point)];
+  if (!points_[size_t(point)]) return;
+  MapPoint& p = *points_[size_t(point)];
   if (p.observations.empty()) return;
   // The choice costs the square of the views compared: over a room filmed for minutes a point
   // gathers hundreds of views (ORB-SLAM2 culls redundant keyframes; we keep them), so only the
@@ -249,7 +295,8 @@ void Map::update_point_descriptor(int point) {
 }
 
 void Map::update_point_geometry(int point) {
-  MapPoint& p = points_[size_t(point)];
+  if (!points_[size_t(point)]) return;
+  MapPoint& p = *points_[size_t(point)];
   if (p.observations.empty()) return;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   for (const Observation& o : p.observations)
@@ -289,7 +336,7 @@ void Map::set_keyframe_pose(int keyframe, const Eigen::Isometry3d& T_w_c) {
 
 int Map::num_good_points() const {
   return static_cast<int>(
-      std::count_if(points_.begin(), points_.end(), [](const MapPoint& p) { return !p.bad; }));
+      std::count_if(points_.begin(), points_.end(), [](const auto& p) { return p != nullptr; }));
 }
 
 }  // namespace slamkit

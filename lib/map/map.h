@@ -3,6 +3,7 @@
 // the covisibility graph and the spanning tree, kept consistent with each other. What happens
 // to the map at a new keyframe (new points, culling, duplicate fusion, local BA) lives in
 // lib/mapping; the problems built from it in lib/optimization.
+#include <memory>
 #include <vector>
 
 #include "core/camera.h"
@@ -22,6 +23,11 @@ class Map {
  public:
   explicit Map(PyramidGeometry pyramid = {}, int covisibility_min_shared = 15)
       : pyramid_(pyramid), covisibility_min_shared_(covisibility_min_shared) {}
+  // Copies are deep (a test runs the loop pass on a copy of a mapped run's map).
+  Map(const Map& other);
+  Map& operator=(const Map& other);
+  Map(Map&&) noexcept = default;
+  Map& operator=(Map&&) noexcept = default;
 
   // Adds the keyframe as it is (its point_ids must be -1 or valid points it observes: those
   // observations are added). Returns its index. The caller then makes new points
@@ -71,27 +77,31 @@ class Map {
   // New pinhole pixels and depths for the keyframe's keypoints (same count and order).
   void set_keyframe_keypoints(int keyframe, std::vector<Eigen::Vector2d> undistorted,
                               std::vector<float> depths);
-  void set_point_position(int point, const Eigen::Vector3d& p_w) {
-    points_[size_t(point)].p_w = p_w;
-  }
-  void count_visible(int point) { ++points_[size_t(point)].visible; }
-  void count_found(int point) { ++points_[size_t(point)].found; }
+  // No effect on a point culled or merged away (a BA result may arrive after that).
+  void set_point_position(int point, const Eigen::Vector3d& p_w);
+  void count_visible(int point);
+  void count_found(int point);
 
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
   const Keyframe& keyframe(int id) const { return keyframes_[size_t(id)]; }
-  const std::vector<MapPoint>& points() const { return points_; }
-  const MapPoint& point(int id) const { return points_[size_t(id)]; }
+  // Every id ever given out stays valid. A point culled or merged away gives its storage back
+  // (on a long sequence most ids are such points); point() then returns an empty point
+  // marked bad.
+  int num_point_ids() const { return int(points_.size()); }
+  const MapPoint& point(int id) const;
   const PyramidGeometry& pyramid() const { return pyramid_; }
   int num_good_points() const;
 
  private:
+  MapPoint& live(int id);  // throws std::logic_error for a point culled or merged away
+  void release(int id);
   void link(int keyframe, int other, int weight);
   void sort_covisible(int keyframe);
 
   PyramidGeometry pyramid_;
   int covisibility_min_shared_;
   std::vector<Keyframe> keyframes_;
-  std::vector<MapPoint> points_;
+  std::vector<std::unique_ptr<MapPoint>> points_;
 };
 
 }  // namespace slamkit

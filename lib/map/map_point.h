@@ -30,7 +30,7 @@ struct MapPoint {
   // Tracking counters for culling: frames whose view contained the point, frames that
   // matched it as an inlier (both start at 1, as ORB-SLAM2's).
   int visible = 1, found = 1;
-  bool bad = false;  // culled or merged away; its id stays, never reused
+  bool bad = false;  // culled or merged away (Map::point then returns an empty one); ids stay
 
   int num_observations() const { return static_cast<int>(observations.size()); }
   double found_ratio() const { return double(found) / double(visible); }

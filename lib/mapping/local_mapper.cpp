@@ -163,7 +163,7 @@ int LocalMapper::fuse_duplicates(int keyframe) {
   fuse(keyframe, {theirs.begin(), theirs.end()});
 
   // Of the keyframe's points, only those that gained observations changed.
-  std::vector<bool> changed(map_.points().size(), false);
+  std::vector<bool> changed(size_t(map_.num_point_ids()), false);
   for (int id : gained) changed[size_t(id)] = true;
   for (int id : points_of(keyframe))
     if (changed[size_t(id)]) {

@@ -147,7 +147,7 @@ void MapBaJob::carry_along(Map& map, const std::vector<Eigen::Isometry3d>& T_w_c
     map.set_keyframe_pose(int(k), map.keyframe(parent).T_w_c *
                                       T_w_c_before[size_t(parent)].inverse() * T_w_c_before[k]);
   }
-  std::vector<bool> in_problem(map.points().size(), false);
+  std::vector<bool> in_problem(size_t(map.num_point_ids()), false);
   for (int id : points_) in_problem[size_t(id)] = true;
   for (size_t id = 0; id < in_problem.size(); ++id) {
     const MapPoint& p = map.point(int(id));

@@ -39,7 +39,7 @@ PoseGraphReport correct_loops(Map& map, const std::vector<LoopConstraint>& loops
   std::vector<Eigen::Isometry3d> T_w_c_before;
   for (const Keyframe& k : map.keyframes()) T_w_c_before.push_back(k.T_w_c);
   for (size_t k = 0; k < graph.T_w_c.size(); ++k) map.set_keyframe_pose(int(k), graph.T_w_c[k]);
-  for (size_t id = 0; id < map.points().size(); ++id) {
+  for (size_t id = 0; id < size_t(map.num_point_ids()); ++id) {
     const MapPoint& p = map.point(int(id));
     if (p.bad) continue;
     const int r = p.reference_keyframe;

@@ -167,7 +167,7 @@ std::vector<Tracker::Match> Tracker::match_local_map(const PreparedFrame& frame,
   // each searched at the pyramid level its distance predicts.
   const Eigen::Isometry3d T_c_w = T_w_c_guess.inverse();
   const Eigen::Vector3d centre = T_w_c_guess.translation();
-  point_mark_.resize(map_.points().size(), size_t(-1));
+  point_mark_.resize(size_t(map_.num_point_ids()), size_t(-1));
   std::vector<int> ids;
   MapPointSet points;
   for (int k : local_keyframes(voted))

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
 
 namespace slamkit {
 namespace {
@@ -239,6 +240,31 @@ TEST(Map, CullingAPointUnlinksEveryKeypoint) {
   EXPECT_EQ(map.keyframe(1).point_ids[5], -1);
   map.update_connections(1);
   EXPECT_EQ(map.keyframe(1).shared_points.at(0), 19);
+}
+
+TEST(Map, ACulledPointStaysBadThroughLateUpdatesAndCopiesAreDeep) {
+  Map map = map_sharing({20});
+  const Eigen::Vector3d before = map.point(6).p_w;
+  map.cull_point(5);
+  // A BA result or a tracking count may still name the culled point: nothing happens.
+  map.set_point_position(5, Eigen::Vector3d(1, 2, 3));
+  map.count_found(5);
+  map.erase_observation(5, 0);
+  map.cull_point(5);
+  EXPECT_TRUE(map.point(5).bad);
+  EXPECT_TRUE(map.point(5).observations.empty());
+  EXPECT_EQ(map.num_point_ids(), 40);
+  EXPECT_EQ(map.num_good_points(), 39);
+  // Adding an observation to it is a programming error, reported as such.
+  EXPECT_THROW(map.add_observation(5, 0, 5), std::logic_error);
+
+  Map copy = map;
+  copy.set_point_position(6, Eigen::Vector3d(1, 2, 3));
+  copy.cull_point(7);
+  EXPECT_EQ(map.point(6).p_w, before);
+  EXPECT_FALSE(map.point(7).bad);
+  EXPECT_TRUE(copy.point(5).bad);
+  EXPECT_EQ(copy.point(6).p_w, Eigen::Vector3d(1, 2, 3));
 }
 
 }  // namespace
