@@ -17,8 +17,7 @@ struct Observation {
 struct MapPoint {
   Eigen::Vector3d p_w = Eigen::Vector3d::Zero();  // world position, metres
   // The observation descriptor with the least median Hamming distance to the others.
-  // Held by value: a map keeps every point id ever made (culled ones too), and a cv::Mat per
-  // point cost 96 bytes in the slot and about 100 on the heap.
+  // Held by value: a cv::Mat took 96 bytes in the point and about 100 more on the heap.
   Descriptor descriptor{};
   std::vector<Observation> observations;  // one per keyframe, in insertion order
   int reference_keyframe = -1;            // the keyframe that created it
