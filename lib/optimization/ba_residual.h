@@ -31,6 +31,8 @@ class BaResidual final : public ceres::SizedCostFunction<3, 4, 3, 3> {
   static constexpr double kMinDepth = 1e-3;
 
   // depth <= 0: no depth, the 2D residual. bf: virtual baseline times fx (pixels x metres).
+  // `k` is referenced, not copied (a global BA holds one residual per observation): it must
+  // outlive the residual.
   BaResidual(const Eigen::Vector2d& uv, double depth, double sigma, const BaIntrinsics& k,
              double bf);
 
@@ -46,7 +48,7 @@ class BaResidual final : public ceres::SizedCostFunction<3, 4, 3, 3> {
   Eigen::Vector2d uv_;
   double disparity_;  // measured bf / depth; 0 without depth
   double inv_sigma_;
-  BaIntrinsics k_;
+  const BaIntrinsics& k_;
   double bf_;
 };
 

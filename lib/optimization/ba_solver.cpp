@@ -75,7 +75,6 @@ BaSolver::BaSolver(const BaProblem& problem, const BaIntrinsics& intrinsics,
   }
   for (int i = 0; i < num_points_; ++i) Eigen::Map<Eigen::Vector3d>(point(i)) = problem.p_w[i];
 
-  residuals_.reserve(observations_.size());
   for (const BaObservation& o : observations_) {
     if (o.pose < 0 || o.pose >= num_poses_ || o.point < 0 || o.point >= num_points_) {
       throw std::invalid_argument("bundle adjustment: observation of pose " +
@@ -83,8 +82,7 @@ BaSolver::BaSolver(const BaProblem& problem, const BaIntrinsics& intrinsics,
                                   " out of range");
     }
     const double depth = residual.use_depth ? o.depth : 0.0;
-    residuals_.push_back(
-        std::make_unique<BaResidual>(o.uv, depth, o.sigma, intrinsics, residual.virtual_bf));
+    residuals_.emplace_back(o.uv, depth, o.sigma, intrinsics_, residual.virtual_bf);
   }
   inlier_.resize(observations_.size());
   double unused;
@@ -119,7 +117,7 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
   for (size_t i = 0; i < observations_.size(); ++i) {
     if (!inlier_[i]) continue;
     const int j = observations_[i].point;
-    point_determined[j] = point_determined[j] || seen[j] || residuals_[i]->dimension() == 3;
+    point_determined[j] = point_determined[j] || seen[j] || residuals_[i].dimension() == 3;
     seen[j] = true;
   }
 
@@ -131,8 +129,8 @@ bool BaSolver::run(int iterations, bool robust, bool points_free) {
     const BaObservation& o = observations_[i];
     if (!inlier_[i] || !point_determined[o.point]) continue;
     ceres::LossFunction* loss = nullptr;
-    if (robust) loss = residuals_[i]->dimension() == 3 ? &huber_3d_ : &huber_2d_;
-    problem.AddResidualBlock(residuals_[i].get(), loss, rotation(o.pose), translation(o.pose),
+    if (robust) loss = residuals_[i].dimension() == 3 ? &huber_3d_ : &huber_2d_;
+    problem.AddResidualBlock(&residuals_[i], loss, rotation(o.pose), translation(o.pose),
                              point(o.point));
     if (!pose_added[o.pose]) {
       pose_added[o.pose] = true;
@@ -248,7 +246,7 @@ bool BaSolver::chi2(int observation, double& value) const {
   const BaObservation& o = observations_[observation];
   const double* parameters[] = {rotation(o.pose), translation(o.pose), point(o.point)};
   Eigen::Vector3d r;
-  if (!residuals_[observation]->Evaluate(parameters, r.data(), nullptr)) return false;
+  if (!residuals_[observation].Evaluate(parameters, r.data(), nullptr)) return false;
   value = r.squaredNorm();
   return true;
 }
@@ -257,7 +255,7 @@ void BaSolver::classify() {
   for (size_t i = 0; i < observations_.size(); ++i) {
     if (!inlier_[i]) continue;
     const double threshold =
-        residuals_[i]->dimension() == 3 ? settings_.chi2_3d : settings_.chi2_2d;
+        residuals_[i].dimension() == 3 ? settings_.chi2_3d : settings_.chi2_2d;
     double value;
     inlier_[i] = chi2(static_cast<int>(i), value) && value <= threshold;
   }

@@ -6,7 +6,7 @@
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 
-#include <memory>
+#include <deque>
 #include <vector>
 
 #include "core/stopwatch.h"
@@ -26,6 +26,9 @@ class BaSolver {
   // pose_fixed does not match T_c_w.
   BaSolver(const BaProblem& problem, const BaIntrinsics& intrinsics,
            const BaResidualSettings& residual);
+  // The residuals point at the solver's intrinsics and the Problems at its residuals.
+  BaSolver(const BaSolver&) = delete;
+  BaSolver& operator=(const BaSolver&) = delete;
 
   // Something to optimise: at least one free pose and one observation.
   bool solvable() const;
@@ -73,7 +76,9 @@ class BaSolver {
   // p_w. Ceres orders the blocks of an elimination group by address, so with a single array
   // that order is the index order whatever the heap does, and results are bit-reproducible.
   std::vector<double> parameters_;
-  std::vector<std::unique_ptr<BaResidual>> residuals_;
+  // A deque, not a vector: residuals can be neither copied nor moved (Ceres' CostFunction), and
+  // a deque builds them in place in blocks, without an allocation each.
+  std::deque<BaResidual> residuals_;
   std::vector<bool> inlier_;
   BaIntrinsics intrinsics_;
   BaResidualSettings settings_;
