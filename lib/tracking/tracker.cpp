@@ -67,7 +67,12 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
     if (!estimate.ok && !reacquiring_) {
       reacquiring_ = true;
       PoseEstimate second = attempt(frame, record, watch);
-      if (second.ok) estimate = std::move(second);
+      // The record now holds the second attempt's matches and solver, so its outcome is the
+      // one kept, failed or not. The frame's surfaces and grey pyramid are the same whichever
+      // attempt built them; the next frame reuses them.
+      if (second.surfaces.empty()) second.surfaces = std::move(estimate.surfaces);
+      if (second.grey.empty()) second.grey = std::move(estimate.grey);
+      estimate = std::move(second);
     }
     if (!estimate.ok) {
       record.lost = true;
