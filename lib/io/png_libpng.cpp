@@ -114,6 +114,8 @@ void write_png(const std::filesystem::path& path, const cv::Mat& image, int comp
   png_init_io(png, file.get());
   png_set_compression_level(png, compression);
   png_set_compression_strategy(png, Z_RLE);
+  // Sub on every row (png_file.h): synthetic desk 600's `run` took 10 % less CPU.
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_IHDR(png, info, png_uint_32(image.cols), png_uint_32(image.rows),
                image.depth() == CV_16U ? 16 : 8, colour, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
