@@ -34,13 +34,13 @@ struct LocalBaSettings {
   double min_motion = 1e-4;            // (paper)
   // (slamkit) The best covisible neighbours that move with the keyframe; 0 = all of them, as
   // ORB-SLAM2, which keeps the window small by culling redundant keyframes (we keep every
-  // keyframe: in a room the window then grows to most of the map). 5 cost about 12 % less CPU
-  // on desk 600 than 10, every preset's mean ATE within its seeds' scatter (docs/experiments.md,
-  // 2026-12-05; fewer fixed keyframes lost the kinect lowtexture preset).
+  // keyframe: in a room the window then grows to most of the map). 5 cost 11 % less CPU on
+  // desk 600 than 10, every preset's mean ATE within its seeds' scatter (docs/experiments.md,
+  // 2026-12-05).
   int max_covisible_keyframes = 5;
   // (slamkit) Of the other keyframes observing the window's points (held fixed), those sharing
   // the most points with it; 0 = all (ORB-SLAM2). In a room most of the map sees the window's
-  // points.
+  // points. 15 doubled the kinect lowtexture preset's error on one seed.
   int max_fixed_keyframes = 20;
   // (slamkit) Local BA at every n-th keyframe only (1 = each, as the paper); each window spans
   // the best covisible keyframes, so skipping one in n leaves no keyframe unadjusted.
