@@ -15,9 +15,9 @@ constexpr size_t kMaxImageBytes = size_t(256) << 20;  // decoded
 // Decodes as stored: 8-bit grey CV_8UC1, colour CV_8UC3 (BGR, as OpenCV), with alpha
 // CV_8UC4 (BGRA), 16-bit grey CV_16UC1 (values exact), 16-bit colour CV_16UC3/CV_16UC4.
 // Palette and sub-8-bit images are expanded to 8 bits. The common layouts (8- and 16-bit
-// grey, RGB, RGBA, not interlaced) go through lodepng with ISA-L's inflate, twice as fast
-// as libpng and pixel-identical to it (tests/io, tests/benchmark/png_decode_benchmark);
-// libpng decodes the rest. Throws InputError naming the file, also for an image beyond
+// grey, RGB, RGBA, not interlaced) are inflated by ISA-L and unfiltered here
+// (io/png_unfilter.h), over twice as fast as libpng and pixel-identical to it (tests/io,
+// tests/benchmark/png_decode_benchmark); libpng decodes the rest. Throws InputError naming the file, also for an image beyond
 // kMaxImageSide or kMaxImageBytes (checked on the header, before any pixel memory).
 cv::Mat read_png(const std::filesystem::path& path);
 

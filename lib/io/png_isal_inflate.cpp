@@ -3,7 +3,6 @@
 #include <isa-l/igzip_lib.h>
 
 #include <cstdint>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 
@@ -25,31 +24,30 @@ const char* isal_error_text(int code) {
 
 }  // namespace
 
-unsigned inflate_with_isal(unsigned char** out, size_t* out_size, const unsigned char* in,
-                           size_t in_size, const LodePNGDecompressSettings* settings) {
-  auto& context = *static_cast<InflateContext*>(const_cast<void*>(settings->custom_context));
+bool inflate_with_isal(const unsigned char* in, size_t in_size, unsigned char* out,
+                       size_t out_size, std::string& error) {
   constexpr size_t kMax = std::numeric_limits<uint32_t>::max();
-  if (in_size > kMax || context.expected_bytes > kMax) {
-    context.error = "image data of 4 GiB or more";
-    return 1;
-  }
-  *out = static_cast<unsigned char*>(std::malloc(context.expected_bytes));
-  if (!*out) {
-    context.error = "out of memory";
-    return 1;
+  if (in_size > kMax || out_size > kMax) {
+    error = "image data of 4 GiB or more";
+    return false;
   }
   auto state = std::make_unique<inflate_state>();  // 87 KB: not on a worker thread's stack
   isal_inflate_init(state.get());
   state->crc_flag = ISAL_ZLIB;
   state->next_in = const_cast<unsigned char*>(in);
   state->avail_in = uint32_t(in_size);
-  state->next_out = *out;
-  state->avail_out = uint32_t(context.expected_bytes);
+  state->next_out = out;
+  state->avail_out = uint32_t(out_size);
   const int code = isal_inflate_stateless(state.get());
-  *out_size = state->total_out;
-  if (code == ISAL_DECOMP_OK) return 0;
-  context.error = isal_error_text(code);
-  return 1;
+  if (code != ISAL_DECOMP_OK) {
+    error = isal_error_text(code);
+    return false;
+  }
+  if (state->total_out != out_size) {
+    error = "less image data than the header declares";
+    return false;
+  }
+  return true;
 }
 
 }  // namespace slamkit

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "io/png_file.h"
-#include "io/png_lodepng.h"
 #include "io/png_source.h"
+#include "png_lodepng.h"
 #ifdef SLAMKIT_HAVE_LIBDEFLATE
 #include <libdeflate.h>
 #endif
@@ -63,8 +63,12 @@ cv::Mat decode_with_spng(const std::filesystem::path& path) {
 
 std::vector<PngCandidate> png_candidates() {
   std::vector<PngCandidate> all = {
-      {"libpng (read_png before)", read_png_with_libpng},
-      {"lodepng + ISA-L (read_png)", read_png},
+      {"libpng", read_png_with_libpng},
+      {"ISA-L inflate, slamkit's unfilter (read_png)", read_png},
+      {"lodepng + ISA-L inflate (read_png before)",
+       [](const std::filesystem::path& p) {
+         return decode_png_with_lodepng(load_png_source(p), inflate_hook_with_isal);
+       }},
       {"lodepng, its own inflate",
        [](const std::filesystem::path& p) {
          return decode_png_with_lodepng(load_png_source(p), nullptr);

@@ -1,15 +1,20 @@
-// Our PNG reader (lodepng + ISA-L, libpng for the rest) and writer against libpng alone and
+// Our PNG reader (ISA-L's inflate and our unfilter, libpng for the rest) and writer against libpng alone and
 // OpenCV's codecs, as independent references.
 #include "io/png_file.h"
 
 #include <gtest/gtest.h>
+#include <png.h>
 #include <zlib.h>
 
+#include <cstdio>
+
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -79,9 +84,50 @@ TEST(PngFile, OursAndOpenCvReadEachOthersFilesExactly) {
   }
 }
 
-// Each row's filter byte (0 None ... 4 Paeth) of a PNG we wrote: every IDAT chunk's data in
-// order, inflated. Big-endian lengths, as fix_crc reads them.
-std::vector<int> row_filters(const std::string& png, const cv::Mat& image) {
+// Writes `image` (CV_8UC1/3/4 or CV_16UC1/3, samples as stored: no BGR swap) with libpng,
+// every row filtered by `filter` (PNG_FILTER_NONE ... PNG_FILTER_PAETH): files that read_png
+// must undo as libpng does, written independently of our writer.
+void write_with_libpng_filter(const fs::path& path, const cv::Mat& image, int filter) {
+  std::FILE* file = std::fopen(path.string().c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, file);
+  const int colour = image.channels() == 1   ? PNG_COLOR_TYPE_GRAY
+                     : image.channels() == 3 ? PNG_COLOR_TYPE_RGB
+                                             : PNG_COLOR_TYPE_RGB_ALPHA;
+  png_set_IHDR(png, info, png_uint_32(image.cols), png_uint_32(image.rows),
+               image.depth() == CV_16U ? 16 : 8, colour, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, filter);
+  png_write_info(png, info);
+  if (image.depth() == CV_16U) png_set_swap(png);
+  for (int r = 0; r < image.rows; ++r) png_write_row(png, image.ptr<png_byte>(r));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(file);
+}
+
+// `png` with its image data replaced by `scanlines` (filter bytes and rows), deflated into
+// one IDAT chunk: for damage that passes every CRC and the deflate checks.
+std::string with_scanlines(const std::string& png, const std::vector<unsigned char>& scanlines) {
+  uLongf size = compressBound(scanlines.size());
+  std::string deflated(size, '\0');
+  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(deflated.data()), &size, scanlines.data(),
+                     scanlines.size()),
+            Z_OK);
+  deflated.resize(size);
+  const size_t idat = find_chunk(png, "IDAT"), iend = find_chunk(png, "IEND");
+  std::string chunk(4, '\0');
+  for (int k = 0; k < 4; ++k) chunk[size_t(k)] = char(size >> (24 - 8 * k));
+  chunk += "IDAT" + deflated + std::string(4, '\0');
+  std::string result = png.substr(0, idat) + chunk + png.substr(iend);
+  fix_crc(result, idat);
+  return result;
+}
+
+// The inflated scanlines of a file we wrote (one filter byte and the row's bytes each).
+std::vector<unsigned char> scanlines_of(const std::string& png, const cv::Mat& image) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(png.data());
   std::string deflated;
   for (size_t at = 8; at + 12 <= png.size();) {
@@ -90,15 +136,21 @@ std::vector<int> row_filters(const std::string& png, const cv::Mat& image) {
     if (png.compare(at + 4, 4, "IDAT") == 0) deflated += png.substr(at + 8, length);
     at += 12 + length;
   }
-  const size_t row_bytes = 1 + size_t(image.cols) * image.elemSize();
-  std::vector<unsigned char> raw(row_bytes * size_t(image.rows));
+  std::vector<unsigned char> raw((1 + size_t(image.cols) * image.elemSize()) * size_t(image.rows));
   uLongf raw_size = raw.size();
   EXPECT_EQ(uncompress(raw.data(), &raw_size,
                        reinterpret_cast<const Bytef*>(deflated.data()), deflated.size()),
             Z_OK);
   EXPECT_EQ(raw_size, raw.size());
+  return raw;
+}
+
+// Each row's filter byte (0 None ... 4 Paeth) of a PNG file's bytes.
+std::vector<int> row_filters(const std::string& png, const cv::Mat& image) {
+  const std::vector<unsigned char> raw = scanlines_of(png, image);
+  const size_t scanline = raw.size() / size_t(image.rows);
   std::vector<int> filters;
-  for (size_t r = 0; r < size_t(image.rows); ++r) filters.push_back(raw[r * row_bytes]);
+  for (size_t r = 0; r < size_t(image.rows); ++r) filters.push_back(raw[r * scanline]);
   return filters;
 }
 
@@ -129,6 +181,61 @@ TEST(PngFile, EveryLayoutDecodesAsLibpngDoes) {
   cv::Mat bilevel = random_image(CV_8UC1) > 127;
   cv::imwrite((dir / "bilevel.png").string(), bilevel, {cv::IMWRITE_PNG_BILEVEL, 1});
   EXPECT_TRUE(same(read_png(dir / "bilevel.png"), bilevel));
+}
+
+TEST(PngFile, EachRowFilterIsUndoneAsLibpngDoes) {
+  // read_png undoes the five filters itself (io/png_unfilter.h); libpng is the reference, and
+  // the image written is the truth. Every pixel size the unfilter knows: 1, 2, 3, 4, 6 bytes.
+  const auto dir = test::temp_dir("png");
+  const std::vector<std::pair<int, int>> filters = {{PNG_FILTER_NONE, 0}, {PNG_FILTER_SUB, 1},
+                                                    {PNG_FILTER_UP, 2}, {PNG_FILTER_AVG, 3},
+                                                    {PNG_FILTER_PAETH, 4}};
+  for (int type : {CV_8UC1, CV_8UC3, CV_8UC4, CV_16UC1, CV_16UC3}) {
+    const cv::Mat image = random_image(type);
+    for (const auto& [filter, code] : filters) {
+      const fs::path file = dir / "filtered.png";
+      write_with_libpng_filter(file, image, filter);
+      const std::vector<int> used = row_filters(file_bytes(file), image);
+      EXPECT_EQ(std::count(used.begin() + 1, used.end(), code), image.rows - 1)
+          << "rows after the first use filter " << code;
+      cv::Mat expected = image;  // written as RGB(A); read as BGR(A)
+      if (image.channels() == 3) cv::cvtColor(image, expected, cv::COLOR_RGB2BGR);
+      if (image.channels() == 4) cv::cvtColor(image, expected, cv::COLOR_RGBA2BGRA);
+      EXPECT_TRUE(same(read_png(file), expected)) << "type " << type << ", filter " << code;
+      EXPECT_TRUE(same(read_png_with_libpng(file), expected)) << "type " << type << ", filter " << code;
+    }
+  }
+}
+
+TEST(PngFile, UnknownFilterTypesAndShortImageDataAreInputErrors) {
+  const auto dir = test::temp_dir("png");
+  const cv::Mat image = random_image(CV_8UC3);
+  write_png(dir / "good.png", image);
+  const std::string good = file_bytes(dir / "good.png");
+  std::vector<unsigned char> scanlines = scanlines_of(good, image);
+  const size_t scanline = scanlines.size() / size_t(image.rows);
+
+  std::vector<unsigned char> bad_filter = scanlines;
+  bad_filter[5 * scanline] = 7;  // row 5: no such filter
+  write_bytes(dir / "filter.png", with_scanlines(good, bad_filter));
+  std::vector<unsigned char> short_data(scanlines.begin(), scanlines.end() - long(scanline));
+  write_bytes(dir / "rows.png", with_scanlines(good, short_data));  // a row missing, valid zlib
+  write_bytes(dir / "same.png", with_scanlines(good, scanlines));   // the helper itself is sound
+  EXPECT_TRUE(same(read_png(dir / "same.png"), image));
+  for (const char* name : {"filter.png", "rows.png"}) expect_input_error_naming(dir / name);
+  try {
+    read_png(dir / "filter.png");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown filter type 7 in row 5"), std::string::npos)
+        << e.what();
+  }
+  try {
+    read_png(dir / "rows.png");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("less image data than the header declares"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(PngFile, EverySharedRealFrameDecodesAsLibpngDoes) {

@@ -1,7 +1,7 @@
 #pragma once
-// PNG decoding through lodepng with a pluggable inflate: lodepng parses the chunks and undoes
-// the filters, the inflate function given (lodepng's custom_zlib hook) unpacks the image
-// data. read_png plugs in ISA-L's (io/png_isal_inflate.h); the benchmark tries others.
+// PNG decoding through lodepng with a pluggable inflate (lodepng's custom_zlib hook): lodepng
+// parses the chunks and undoes the filters. read_png used this with ISA-L's inflate until it
+// undid the filters itself; the benchmark keeps it beside read_png.
 #include <lodepng.h>
 
 #include <opencv2/core.hpp>
@@ -9,7 +9,7 @@
 
 #include "io/png_source.h"
 
-namespace slamkit {
+namespace slamkit::bench {
 
 // What decode_png_with_lodepng passes to the inflate hook through custom_context.
 struct InflateContext {
@@ -22,11 +22,12 @@ struct InflateContext {
 using ZlibInflate = unsigned (*)(unsigned char** out, size_t* out_size, const unsigned char* in,
                                  size_t in_size, const LodePNGDecompressSettings* settings);
 
-// The layouts it decodes: 8- or 16-bit grey, RGB or RGBA, not interlaced (TUM's and ours).
-bool lodepng_decodes(const PngHeader& header);
+// ISA-L's inflate (io/png_isal_inflate.h) as such a hook.
+unsigned inflate_hook_with_isal(unsigned char** out, size_t* out_size, const unsigned char* in,
+                                size_t in_size, const LodePNGDecompressSettings* settings);
 
-// As read_png documents, with `inflate` (nullptr: lodepng's own). Throws InputError naming
-// the file.
+// As read_png documents, for its common layouts, with `inflate` (nullptr: lodepng's own).
+// Throws InputError naming the file.
 cv::Mat decode_png_with_lodepng(const PngSource& png, ZlibInflate inflate);
 
-}  // namespace slamkit
+}  // namespace slamkit::bench
