@@ -1,7 +1,6 @@
 #include "optimization/map_adjustment.h"
 
 #include <algorithm>
-#include <map>
 
 namespace slamkit {
 namespace {
@@ -21,16 +20,17 @@ std::vector<int> constrained(const Map& map, const std::vector<int>& keyframes,
   return kept;
 }
 
-// The keyframes outside `in_problem` observing `points`, most observations first (then by
-// index), at most `limit` of them (0 = all).
+// The keyframes outside the problem (`pose_of` -1) observing `points`, most observations
+// first (then by index), at most `limit` of them (0 = all).
 std::vector<int> fixed_observers(const Map& map, const std::vector<int>& points,
-                                 const std::map<int, int>& in_problem, int limit) {
-  std::map<int, int> shared;
+                                 const std::vector<int>& pose_of, int limit) {
+  std::vector<int> shared(pose_of.size(), 0);
   for (int id : points)
     for (const Observation& o : map.point(id).observations)
-      if (!in_problem.count(o.keyframe)) ++shared[o.keyframe];
+      if (pose_of[size_t(o.keyframe)] < 0) ++shared[size_t(o.keyframe)];
   std::vector<std::pair<int, int>> ranked;  // (-shared, keyframe)
-  for (const auto& [k, count] : shared) ranked.push_back({-count, k});
+  for (size_t k = 0; k < shared.size(); ++k)
+    if (shared[k] > 0) ranked.push_back({-shared[k], int(k)});
   std::sort(ranked.begin(), ranked.end());
   if (limit > 0 && ranked.size() > size_t(limit)) ranked.resize(size_t(limit));
   std::vector<int> keyframes;
@@ -70,14 +70,15 @@ MapBaJob MapBaJob::whole_map(const Map& map, const Camera& camera,
 MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const Camera& camera,
                    const OptimizationSettings& settings, bool local)
     : intrinsics_{camera.fx, camera.fy, camera.cx, camera.cy}, settings_(settings), local_(local) {
-  std::map<int, int> pose_of;
+  // Each keyframe's pose in the problem, -1 if none: indexed, as it is looked up for every
+  // observation of every point in the window.
+  std::vector<int> pose_of(map.keyframes().size(), -1);
   auto add_pose = [&](int keyframe, bool fixed) {
-    const auto [it, added] = pose_of.emplace(keyframe, int(keyframes_.size()));
-    if (!added) return it->second;
+    if (pose_of[size_t(keyframe)] >= 0) return;
+    pose_of[size_t(keyframe)] = int(keyframes_.size());
     keyframes_.push_back(keyframe);
     problem_.T_c_w.push_back(map.keyframe(keyframe).T_c_w);
     problem_.pose_fixed.push_back(fixed || keyframe == 0);  // keyframe 0 holds the gauge
-    return it->second;
   };
   for (int k : free_keyframes) add_pose(k, false);
   const std::vector<int> points = good_points_of(map, free_keyframes);
@@ -92,11 +93,11 @@ MapBaJob::MapBaJob(const Map& map, const std::vector<int>& free_keyframes, const
     points_.push_back(id);
     problem_.p_w.push_back(p.p_w);
     for (const Observation& o : p.observations) {
-      const auto pose = pose_of.find(o.keyframe);
-      if (pose == pose_of.end()) continue;
+      const int pose = pose_of[size_t(o.keyframe)];
+      if (pose < 0) continue;
       const Keyframe& k = map.keyframe(o.keyframe);
       BaObservation b;
-      b.pose = pose->second;
+      b.pose = pose;
       b.point = index;
       b.uv = k.undistorted[size_t(o.keypoint)];
       b.depth = k.depths[size_t(o.keypoint)];
