@@ -17,6 +17,26 @@ const MapPoint kReleasedPoint = [] {
   p.bad = true;
   return p;
 }();
+
+// The ((n - 1) / 2)-th smallest of values[0, n), each a descriptor distance (0 to 256): the
+// smallest v with more than (n - 1) / 2 values at most v, found by bisection on v with
+// branch-free counts. std::nth_element gave the same value, at a mispredicted branch per
+// comparison (3 % of `run`'s CPU on synthetic desk 600).
+int lower_median(const int* values, size_t n) {
+  const size_t rank = (n - 1) / 2;
+  int lo = 0, hi = kDescriptorBytes * 8;  // the value sought is in [lo, hi]
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    size_t at_most = 0;
+    for (size_t j = 0; j < n; ++j) at_most += values[j] <= mid;
+    if (at_most > rank)
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return lo;
+}
+
 }  // namespace
 
 Map::Map(const Map& other)
@@ -284,11 +304,8 @@ void Map::update_point_descriptor(int point) {
           descriptor_distance(descriptors[i], descriptors[j]);
   size_t best = 0;
   int best_median = std::numeric_limits<int>::max();
-  std::vector<int> row(n);
   for (size_t i = 0; i < n; ++i) {
-    std::copy_n(distances.begin() + long(i * n), n, row.begin());
-    std::nth_element(row.begin(), row.begin() + long((n - 1) / 2), row.end());
-    const int median = row[(n - 1) / 2];
+    const int median = lower_median(distances.data() + i * n, n);
     if (median < best_median) best_median = median, best = i;
   }
   std::copy_n(descriptors[best], kDescriptorBytes, p.descriptor.begin());

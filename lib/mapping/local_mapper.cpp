@@ -1,7 +1,7 @@
 #include "mapping/local_mapper.h"
 
 #include <algorithm>
-#include <set>
+#include <vector>
 
 #include "core/stopwatch.h"
 #include "mapping/duplicate_fusion.h"
@@ -157,10 +157,14 @@ int LocalMapper::fuse_duplicates(int keyframe) {
     gained.insert(gained.end(), ids.begin(), ids.end());
   };
   for (int target : targets) fuse(target, points_of(keyframe));
-  std::set<int> theirs;
-  for (int target : targets)
-    for (int id : points_of(target)) theirs.insert(id);
-  fuse(keyframe, {theirs.begin(), theirs.end()});
+  std::vector<int> theirs;  // each once, ascending
+  for (int target : targets) {
+    const std::vector<int> ids = points_of(target);
+    theirs.insert(theirs.end(), ids.begin(), ids.end());
+  }
+  std::sort(theirs.begin(), theirs.end());
+  theirs.erase(std::unique(theirs.begin(), theirs.end()), theirs.end());
+  fuse(keyframe, theirs);
 
   // Of the keyframe's points, only those that gained observations changed.
   std::vector<bool> changed(size_t(map_.num_point_ids()), false);
