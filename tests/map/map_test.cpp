@@ -195,6 +195,46 @@ TEST(Map, RepresentativeDescriptorHasTheLeastMedianDistance) {
   EXPECT_EQ(nonzero_bytes(map.point(0).descriptor), 1);
 }
 
+TEST(Map, RepresentativeDescriptorMatchesABruteForceChoiceForManyViews) {
+  // Random descriptors seen from 1 to 40 keyframes (beyond kDescriptorViews = 32 only the most
+  // recent 32 take part). The reference sorts each view's distances to the others, itself
+  // included, takes the ((n - 1) / 2)-th and keeps the first view with the least.
+  std::mt19937 rng(11);
+  for (size_t views : {1u, 2u, 3u, 4u, 7u, 16u, 31u, 32u, 33u, 40u}) {
+    Map map(PyramidGeometry{}, 15);
+    std::vector<Descriptor> seen;
+    for (size_t k = 0; k < views; ++k) {
+      Keyframe kf = keyframe_with(1, k);
+      Descriptor d;
+      // Near a common centre, so that medians differ by a few bits and ties occur.
+      for (int b = 0; b < kDescriptorBytes; ++b) d[size_t(b)] = uint8_t(b * 37);
+      for (int flip = 0; flip < 12; ++flip) d[rng() % 32] ^= uint8_t(1u << (rng() % 8));
+      std::copy(d.begin(), d.end(), kf.descriptors.ptr<uchar>(0));
+      seen.push_back(d);
+      if (k > 0) kf.point_ids[0] = 0;
+      map.add_keyframe(std::move(kf));
+      if (k == 0) map.add_point(Eigen::Vector3d(0, 0, 2), 0, 0);
+    }
+    map.update_point_descriptor(0);
+    const size_t first = views > Map::kDescriptorViews ? views - Map::kDescriptorViews : 0;
+    size_t best = first;
+    int best_median = 1 << 30;
+    for (size_t i = first; i < views; ++i) {
+      std::vector<int> distances;
+      for (size_t j = first; j < views; ++j) {
+        int bits = 0;
+        for (int b = 0; b < kDescriptorBytes; ++b)
+          bits += __builtin_popcount(unsigned(seen[i][size_t(b)] ^ seen[j][size_t(b)]));
+        distances.push_back(bits);
+      }
+      std::sort(distances.begin(), distances.end());
+      const int median = distances[(distances.size() - 1) / 2];
+      if (median < best_median) best_median = median, best = i;
+    }
+    EXPECT_EQ(map.point(0).descriptor, seen[best]) << views << " views";
+  }
+}
+
 TEST(Map, ViewingDirectionAndScaleValidDistanceRange) {
   Map map(PyramidGeometry{4, 1.2}, 15);
   map.add_keyframe(keyframe_with(1, 0, Eigen::Isometry3d::Identity(), /*octave=*/2));
