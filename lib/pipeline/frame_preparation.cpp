@@ -1,6 +1,10 @@
 #include "pipeline/frame_preparation.h"
 
+#include <omp.h>
+
+#include <atomic>
 #include <exception>
+#include <thread>
 
 #include "core/stopwatch.h"
 #include "features/orb_extractor.h"
@@ -11,16 +15,15 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
                                           const Settings& settings, const WindowPattern& pattern) {
   std::vector<PreparedFrame> frames(end - begin);
   std::vector<std::exception_ptr> errors(frames.size());
-#pragma omp parallel for schedule(dynamic, 1)
-  for (long k = 0; k < long(frames.size()); ++k) {
+  const auto prepare = [&](size_t k) {
     try {
-      PreparedFrame& out = frames[size_t(k)];
+      PreparedFrame& out = frames[k];
       Stopwatch watch;
-      const RgbdFrame frame = sequence.load(begin + size_t(k));
+      const RgbdFrame frame = sequence.load(begin + k);
       out.decode_ms = watch.lap();
       out.index = frame.index;
       out.stamp = frame.stamp;
-      out.depth_stamp = sequence.depth_stamp(begin + size_t(k));
+      out.depth_stamp = sequence.depth_stamp(begin + k);
       out.depth = frame.depth;
       out.rgb = frame.rgb;
       out.features = extract_orb(frame.rgb, sequence.camera(), settings.orb);
@@ -37,9 +40,20 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
                                pattern);
       out.window_code_ms = watch.lap();
     } catch (...) {
-      errors[size_t(k)] = std::current_exception();
+      errors[k] = std::current_exception();
     }
-  }
+  };
+  // Frames go to the threads through a counter, not an OpenMP loop: libgomp's idle threads
+  // spin (300,000 pause instructions, milliseconds on this machine's Xeon) at the end of each
+  // chunk, on the cores the tracking and local BA threads need.
+  std::atomic<size_t> next{0};
+  const auto work = [&] {
+    for (size_t k = next++; k < frames.size(); k = next++) prepare(k);
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < omp_get_max_threads(); ++t) helpers.emplace_back(work);
+  work();
+  for (std::thread& helper : helpers) helper.join();
   for (const std::exception_ptr& error : errors)
     if (error) std::rethrow_exception(error);
   return frames;
