@@ -43,9 +43,10 @@ std::vector<PreparedFrame> prepare_frames(const TumSequence& sequence, size_t be
       errors[k] = std::current_exception();
     }
   };
-  // Frames go to the threads through a counter, not an OpenMP loop: libgomp's idle threads
-  // spin (300,000 pause instructions, milliseconds on this machine's Xeon) at the end of each
-  // chunk, on the cores the tracking and local BA threads need.
+  // Frames go to `--threads` threads (OpenMP's setting) through a counter, not an OpenMP loop:
+  // libgomp's idle threads spin (by default 300,000 pause instructions before they sleep) at
+  // the end of each chunk, on the cores the tracking and local BA threads need (desk 600: 2 %
+  // more CPU).
   std::atomic<size_t> next{0};
   const auto work = [&] {
     for (size_t k = next++; k < frames.size(); k = next++) prepare(k);
