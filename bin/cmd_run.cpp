@@ -65,6 +65,9 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
                 result.global_ba.free_keyframes + result.global_ba.fixed_keyframes,
                 result.global_ba.points, result.global_ba.report.iterations,
                 result.global_ba.removed_observations, t.global_ba);
+  if (settings.optimization.refine_frames)
+    std::printf("refinement  %d of %zu frames solved again against the final map, %.2f s\n",
+                result.refined_frames, result.frames.size(), t.refine);
   if (result.fusion.frames > 0)
     std::printf(
         "fused map   %zu frames: %zu points raw, %zu after the %.0f mm voxel grid, %zu after "
@@ -78,20 +81,21 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
                  "out of map.ply (a trajectory that flew off?)\n",
                  result.fusion.beyond_grid);
   if (seq.groundtruth() && settings.pipeline.evaluate)
-    std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after local and global BA\n",
+    std::printf("ATE RMSE    %.2f mm as tracked, %.2f mm after the back end\n",
                 1000 * eval::ate_rmse(*seq.groundtruth(), result.tracked_trajectory()),
                 1000 * eval::ate_rmse(*seq.groundtruth(), result.trajectory()));
   std::printf(
       "stages      prepare %.2f s (parallel, beside tracking), track %.2f s (local BA "
-      "%.2f), loops %.2f, global BA %.2f, fusion %.2f, write %.2f; total %.2f s, %.1f "
-      "frames/s\n",
-      t.prepare, t.track, t.local_ba, t.loops, t.global_ba, t.fusion, t.write, t.total,
+      "%.2f), loops %.2f, global BA %.2f, refinement %.2f, fusion %.2f, write %.2f; total "
+      "%.2f s, %.1f frames/s\n",
+      t.prepare, t.track, t.local_ba, t.loops, t.global_ba, t.refine, t.fusion, t.write, t.total,
       double(result.frames.size()) / t.total);
   const StageTimes& cpu = result.cpu_seconds;
   std::printf(
       "CPU         track %.2f s (with preparation and local BA), loops %.2f, global BA "
-      "%.2f, fusion %.2f, write %.2f; total %.2f s; peak memory %.0f MB\n",
-      cpu.track, cpu.loops, cpu.global_ba, cpu.fusion, cpu.write, cpu.total, result.peak_rss_mb);
+      "%.2f, refinement %.2f, fusion %.2f, write %.2f; total %.2f s; peak memory %.0f MB\n",
+      cpu.track, cpu.loops, cpu.global_ba, cpu.refine, cpu.fusion, cpu.write, cpu.total,
+      result.peak_rss_mb);
 }
 
 void run(const RunArgs& args) {

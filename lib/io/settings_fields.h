@@ -286,6 +286,9 @@ template <class V>
 void visit_fields(OptimizationSettings& s, V& v) {
   v.field("min_keyframe_points", s.min_keyframe_points, at_least(0),
           from_slamkit("a keyframe observing fewer map points does not move in BA"));
+  v.field("refine_frames", s.refine_frames,
+          from_slamkit("frames solved again against the final map; false = as tracked "
+                       "relative to their keyframe (ORB-SLAM2)"));
   v.section("residual", s.residual, "the residuals every bundle adjustment shares");
   v.section("local_ba", s.local_ba, "local BA at each new keyframe");
   v.section("global_ba", s.global_ba, "global BA after tracking");

@@ -32,6 +32,7 @@ struct StageTimes {
   double local_ba = 0;  // local BA solving, beside tracking (or inside it with one thread)
   double loops = 0;     // the loop pass: vocabulary, detection, correction
   double global_ba = 0;
+  double refine = 0;  // frame refinement
   double fusion = 0;
   double write = 0;
   double total = 0;  // decode to the last file written
@@ -48,6 +49,7 @@ struct RunResult {
   LoopPassReport loop_pass;  // ran = false unless the loop pass ran
   MapAdjustment global_ba;   // empty unless the global BA ran
   bool global_ba_run = false;
+  int refined_frames = 0;  // frames whose pose frame refinement solved again
   FusionReport fusion;  // frames == 0 unless the map was fused
   StageTimes seconds;
   // Process CPU seconds of each stage, every thread counted. Preparation and local BA run

@@ -7,6 +7,7 @@
 
 #include "core/stopwatch.h"
 #include "pipeline/run_output.h"
+#include "tracking/frame_refinement.h"
 
 namespace slamkit {
 
@@ -55,6 +56,11 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
     }
   });
   reanchor_frames(result.map, result.frames);
+  time_stage(t.refine, cpu.refine, [&] {
+    if (settings.optimization.refine_frames)
+      result.refined_frames =
+          refine_frames(result.map, camera, settings.tracking.motion_ba, result.frames);
+  });
   malloc_trim(0);  // and what the back end freed, before fusion's peak
   time_stage(t.fusion, cpu.fusion, [&] {
     result.fusion = fuse_final_map(result.map, result.frames, std::move(result.keyframe_samples),
@@ -64,7 +70,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
   time_stage(t.write, cpu.write,
              [&] { write_run_outputs(out, sequence_name, camera, settings, result); });
   t.total = total.lap() / 1000.0;
-  cpu.total = cpu.track + cpu.loops + cpu.global_ba + cpu.fusion + cpu.write;
+  cpu.total = cpu.track + cpu.loops + cpu.global_ba + cpu.refine + cpu.fusion + cpu.write;
   write_timing_json(out, sequence_name, result);
   return result;
 }
@@ -72,6 +78,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
 Settings front_end_only(Settings settings) {
   settings.optimization.local_ba.enabled = false;
   settings.optimization.global_ba.enabled = false;
+  settings.optimization.refine_frames = false;
   settings.loop.enabled = false;
   settings.map.enabled = false;
   return settings;

@@ -15,7 +15,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
                     const ProgressCallback& progress = {}, const Vocabulary* vocabulary = nullptr);
 
 // The settings of the front end alone (`slamkit track`): no local or global BA, no loop
-// pass, no map.
+// pass, no frame refinement, no map.
 Settings front_end_only(Settings settings);
 
 }  // namespace slamkit

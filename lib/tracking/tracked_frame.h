@@ -2,6 +2,7 @@
 // What tracking did with one frame: its pose and the numbers behind it (tracking.csv).
 #include <Eigen/Geometry>
 #include <string>
+#include <vector>
 
 namespace slamkit {
 
@@ -12,6 +13,16 @@ enum class PoseSolver {
   kMotionModel,   // tracking failed: the velocity model gives the pose (paper)
 };
 const char* solver_name(PoseSolver solver);
+
+// A keypoint of a frame matched to a map point, as the frame's final pose used it: undistorted
+// pixels (moved to the colour stamp under a rolling shutter), so that the pose can be solved again
+// once the back end has moved the points (tracking/frame_refinement.h).
+struct MatchedKeypoint {
+  int point_id = -1;
+  float u = 0, v = 0;
+  float depth = 0;  // metres; 0 = none
+  float sigma = 1;  // pixels: the keypoint's level scale
+};
 
 struct TrackedFrame {
   size_t index = 0;
@@ -31,6 +42,9 @@ struct TrackedFrame {
   // to the frame (re-anchoring), as ORB-SLAM2 writes its trajectory.
   int reference_keyframe = -1;
   Eigen::Isometry3d T_ref_c = Eigen::Isometry3d::Identity();
+  // The inlier matches of a frame that is not a keyframe and whose pose motion-only BA refined,
+  // kept for frame refinement (optimization.refine_frames) and released by it.
+  std::vector<MatchedKeypoint> matched;
   double similarity = 1;  // zeta against the latest keyframe and its neighbours
   // Per-step wall time, milliseconds.
   double match_ms = 0, pose_ms = 0, refine_ms = 0, keyframe_ms = 0;

@@ -88,6 +88,8 @@ TrackedFrame Tracker::track(PreparedFrame& frame) {
     // A re-acquired frame was matched to one keyframe, not the local map: its pose is the
     // least reliable, and a keyframe made from it would carry that into the map.
     if (!record.lost && !reacquiring_) choose_keyframe(frame, record);
+    if (settings_.optimization.refine_frames && record.refined && !record.lost && !record.keyframe)
+      record.matched = matched_keypoints(frame, estimate.inliers);
     record.keyframe_ms = watch.lap();
   }
   poses_.push_back({frame.stamp, record.T_w_c});
@@ -431,6 +433,20 @@ void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
     if (refined.inliers[i]) kept.push_back(estimate.inliers[i]);
   estimate.inliers = std::move(kept);
   if (record.solver == PoseSolver::kSvdRansac) estimate.support = refined.num_inliers;
+}
+
+std::vector<MatchedKeypoint> Tracker::matched_keypoints(const PreparedFrame& frame,
+                                                        const std::vector<Match>& inliers) const {
+  std::vector<MatchedKeypoint> matched;
+  matched.reserve(inliers.size());
+  for (const Match& m : inliers) {
+    const Eigen::Vector2d& uv = frame.features.undistorted[size_t(m.keypoint)];
+    const int octave = frame.features.keypoints[size_t(m.keypoint)].octave;
+    matched.push_back({m.point_id, float(uv.x()), float(uv.y()),
+                       frame.keypoint_depths[size_t(m.keypoint)],
+                       float(frame.features.pyramid.scales[size_t(octave)])});
+  }
+  return matched;
 }
 
 Eigen::Isometry3d Tracker::motion_model_pose(double stamp) const {

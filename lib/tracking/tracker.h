@@ -76,6 +76,9 @@ class Tracker {
   PoseEstimate align_point_to_plane(const PreparedFrame& frame, const std::vector<Match>& matches,
                                     const Eigen::Isometry3d& T_w_c_guess) const;
   void refine_pose(const PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record) const;
+  // The inliers as frame refinement keeps them (TrackedFrame::matched).
+  std::vector<MatchedKeypoint> matched_keypoints(const PreparedFrame& frame,
+                                                 const std::vector<Match>& inliers) const;
   // The second pass: the frame unrolled with the velocity into it, which the refined pose now
   // gives, and refined again (the first keyframe too, at frame 1).
   void refine_unrolled(PreparedFrame& frame, PoseEstimate& estimate, TrackedFrame& record);

@@ -89,7 +89,7 @@ struct Median {
 void report_pipeline(const std::string& name, const TumSequence& sequence, int threads, int runs,
                      const std::optional<bench::OrbSlam2>& peer) {
   const fs::path work = fs::temp_directory_path() / "slamkit_benchmark_run";
-  const std::vector<std::string> stages = {"track",  "loops", "global_ba",
+  const std::vector<std::string> stages = {"track",  "loops", "global_ba", "refine",
                                            "fusion", "write", "total"};
   Median wall, cpu, rss, orb_wall, orb_cpu, orb_rss, orb_poses;
   std::map<std::string, Median> stage_wall, stage_cpu;

@@ -34,6 +34,14 @@ TEST(Camera, PresetsCarryTheBenchmarkNumbers) {
   EXPECT_DOUBLE_EQ(fr2.depth_scale, 5000.0);
 }
 
+TEST(Camera, KinectPresetsHaveARollingShutterAndNoTrustedDepthStamps) {
+  for (const Camera& kinect : {Camera::freiburg1(), Camera::freiburg2()}) {
+    EXPECT_DOUBLE_EQ(kinect.readout_time, 0.030) << kinect.name;
+    EXPECT_FALSE(kinect.exact_depth_stamps) << kinect.name;
+  }
+  EXPECT_DOUBLE_EQ(Camera::freiburg3().readout_time, 0.0);  // not measured: no Freiburg 3 piece
+}
+
 TEST(Camera, PresetChosenFromTheFolderName) {
   EXPECT_EQ(Camera::preset_for_sequence("/d/rgbd_dataset_freiburg1_desk")->name, "freiburg1");
   EXPECT_EQ(Camera::preset_for_sequence("rgbd_dataset_freiburg2_desk_first50/")->name,

@@ -29,7 +29,7 @@ FrontAndBack compare(const TumSequence& seq, const fs::path& out, const Settings
       ate_rmse(*seq.groundtruth(), track_sequence(seq, front_end_only(settings)).trajectory());
   r.run = run_batch(seq, settings, out, "test");
   r.back_end = ate_rmse(*seq.groundtruth(), r.run.trajectory());
-  std::printf("%s: ATE front end %.2f mm, after local and global BA %.2f mm (%+.0f%%)\n",
+  std::printf("%s: ATE front end %.2f mm, after the back end %.2f mm (%+.0f%%)\n",
               seq.folder().filename().c_str(), 1000 * r.front_end, 1000 * r.back_end,
               100 * (r.back_end / r.front_end - 1));
   return r;

@@ -70,6 +70,11 @@ struct OptimizationSettings {
   // correction instead (ORB-SLAM2's rule for keyframes outside its global BA); local BA holds
   // them fixed.
   int min_keyframe_points = 100;
+  // (slamkit) After the back end, each frame that is not a keyframe solves its pose again by
+  // motion-only BA (tracking.motion_ba) on its tracking inliers, against the points as global BA
+  // left them (docs/method.md#frame-refinement). Off: frames keep their tracked pose relative
+  // to their reference keyframe, as ORB-SLAM2 writes them.
+  bool refine_frames = true;
   BaResidualSettings residual;
   LocalBaSettings local_ba;
   GlobalBaSettings global_ba;
