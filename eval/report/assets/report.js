@@ -324,7 +324,7 @@ function metricsTable() {
     ['version', (run) => (run.run && run.run.version) || '–'],
     ['settings hash', (run) => (run.run && run.run.settings_hash) || '–'],
   ];
-  const stageNames = ['prepare', 'track', 'local_ba', 'loops', 'global_ba', 'fusion', 'write', 'total'];
+  const stageNames = ['prepare', 'track', 'local_ba', 'loops', 'global_ba', 'refine', 'fusion', 'write', 'total'];
   const table = el('table');
   const head = el('tr', {}, el('th', { text: '' }));
   for (const run of runs) head.append(el('th', { text: run.name }));
