@@ -42,8 +42,9 @@ namespace {
 
 // Freiburg 1 and 2 are Kinects (v1), whose colour camera has a rolling shutter. TUM publishes no
 // readout time; 30 ms (about a frame period at 30 Hz) is the kinect sensor model's assumption
-// (docs/sensor.md), and Kerl et al. (ICCV 2015) simulate such a camera with 28 ms. On fr2/desk
-// any value from 20 to 33 ms lowers ATE by a quarter or more (docs/experiments.md).
+// (docs/sensor.md), and Kerl et al. (ICCV 2015) simulate such a camera with 28 ms. With frame
+// refinement any value from 20 to 33 ms lowers fr2/desk's ATE by a quarter or more
+// (docs/experiments.md).
 constexpr double kKinectReadoutTime = 0.030;
 
 }  // namespace
