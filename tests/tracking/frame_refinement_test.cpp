@@ -95,17 +95,29 @@ TEST(FrameRefinement, FramesWithoutMatchesOrTooFewInliersKeepTheirPose) {
 }
 
 TEST(FrameRefinement, PointsCulledSinceTrackingAreLeftOut) {
+  // A culled point reads as an empty one at the world origin; the frame stands 1 m behind the
+  // origin, so that such points lie in front of it, in view.
   const Camera camera = pinhole();
-  Map map = map_of_points(3);
-  const Eigen::Isometry3d truth = pose(2, {0.02, 0.0, 0.05});
+  const Eigen::Isometry3d truth = pose(2, {0.02, 0.0, -1.0});
   const Eigen::Isometry3d start = truth * pose(-0.2, {0.0, 0.006, 0.0});
-  TrackedFrame frame = frame_seeing(map, camera, truth, start);
-  // Every match but 5 goes to a point culled since: 5 cannot make a pose, so it stays.
-  for (size_t i = 5; i < frame.matched.size(); ++i) map.cull_point(frame.matched[i].point_id);
-  std::vector<TrackedFrame> frames = {frame};
-
-  EXPECT_EQ(refine_frames(map, camera, MotionBaSettings{}, frames), 0);
-  EXPECT_TRUE(frames[0].T_w_c.isApprox(start, 0));
+  {
+    // Every second match goes to a point culled since: the rest still give the true pose.
+    Map map = map_of_points(3);
+    std::vector<TrackedFrame> frames = {frame_seeing(map, camera, truth, start)};
+    for (size_t i = 0; i < frames[0].matched.size(); i += 2)
+      map.cull_point(frames[0].matched[i].point_id);
+    EXPECT_EQ(refine_frames(map, camera, MotionBaSettings{}, frames), 1);
+    EXPECT_LT(translation_error(frames[0].T_w_c, truth), 1e-6);
+  }
+  {
+    // Every match but 5 goes to a point culled since: 5 cannot make a pose, so it stays.
+    Map map = map_of_points(3);
+    std::vector<TrackedFrame> frames = {frame_seeing(map, camera, truth, start)};
+    for (size_t i = 5; i < frames[0].matched.size(); ++i)
+      map.cull_point(frames[0].matched[i].point_id);
+    EXPECT_EQ(refine_frames(map, camera, MotionBaSettings{}, frames), 0);
+    EXPECT_TRUE(frames[0].T_w_c.isApprox(start, 0));
+  }
 }
 
 TEST(FrameRefinement, SameResultForAnyThreadCount) {
