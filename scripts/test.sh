@@ -22,6 +22,9 @@ else
 fi
 if [[ -z "${SLAMKIT_DATA:-}" ]]; then
   echo "test: SLAMKIT_DATA is not set: tests on real TUM data will be skipped"
+else
+  # ctest runs each test in its own folder: a relative path would find no data there.
+  export SLAMKIT_DATA="$(realpath -m -- "$SLAMKIT_DATA")"
 fi
 ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" "$@"
 if $ci; then
