@@ -62,7 +62,13 @@ def main():
             code = 0
             try:
                 draw(figure)
-            except BaseException:  # the traceback says which figure failed and why
+            except OSError as error:  # a file it cannot read or write: one line says which
+                what = error.strerror or str(error)
+                if error.filename:
+                    what = "%s: %s" % (error.filename, what)
+                print("plot.py: no %s figure: %s" % (figure["figure"], what), file=sys.stderr)
+                code = 1
+            except BaseException:  # a defect: the traceback says where
                 traceback.print_exc()
                 code = 1
             sys.stdout.flush(), sys.stderr.flush()

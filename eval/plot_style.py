@@ -42,6 +42,9 @@ def save(fig, out_dir, name, pdf):
     renderer = FigureCanvasAgg(fig).get_renderer()
     bbox = fig.get_tightbbox(renderer).padded(matplotlib.rcParams["savefig.pad_inches"])
     for ext in ["png", "svg"] + (["pdf"] if pdf else []):
-        fig.savefig(os.path.join(out_dir, "%s.%s" % (name, ext)), bbox_inches=bbox,
-                    metadata=NO_DATE[ext])
+        path = os.path.join(out_dir, "%s.%s" % (name, ext))
+        try:
+            fig.savefig(path, bbox_inches=bbox, metadata=NO_DATE[ext])
+        except OSError as error:  # a full disk fails in a writer that does not name the file
+            raise OSError(error.errno, "cannot write %s: %s" % (path, error.strerror)) from None
     return os.path.join(out_dir, name + ".png")

@@ -337,6 +337,28 @@ TEST(EvalCli, MissingPlotPythonIsAnErrorOnlyWhenPlotsWereRequested) {
   EXPECT_NE(log.find("note: no ate plots drawn"), std::string::npos) << log;
 }
 
+TEST(EvalCli, AFullDiskUnderAPlotGivesOneLineNamingTheFileNotATraceback) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 cannot import matplotlib (scripts/setup.sh installs it)";
+  const fs::path dir = test::temp_dir("eval_cli");
+  const fs::path gt = write_tum(dir / "gt.txt", 100, 1000.0);
+  fs::create_directories(dir / "plots");
+  // Writing to /dev/full fails with ENOSPC: the plot's PNG meets a full disk.
+  fs::create_symlink("/dev/full", dir / "plots" / "ate_over_time.png");
+  std::string log;
+  EXPECT_EQ(test::run_slamkit("eval ate " + quoted(gt) + " " + quoted(gt) + " --plot " +
+                                  quoted(dir / "plots"),
+                              &log),
+            1);
+  EXPECT_NE(log.find("plot.py: no ate figure: cannot write " +
+                     (dir / "plots" / "ate_over_time.png").string() +
+                     ": No space left on device"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(log.find("Traceback (most recent call last)"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(dir / "plots" / "metrics.json"));
+}
+
 TEST(EvalCli, RealFr2DeskAllWritesReferenceNumbersAndPlotsAndCompareTablesThem) {
   SLAMKIT_REQUIRE_DATA(gt, "trajectories/fr2_desk/groundtruth.txt");
   SLAMKIT_REQUIRE_DATA(est, "trajectories/fr2_desk/orbslam.txt");
