@@ -8,6 +8,8 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 namespace slamkit::test {
 
@@ -30,6 +32,38 @@ std::string read_text(const std::filesystem::path& file) {
   return text.str();
 }
 
+namespace {
+
+// The folders temp_dir handed to the running test.
+std::vector<std::filesystem::path>& folders_of_running_test() {
+  static std::vector<std::filesystem::path> folders;
+  return folders;
+}
+
+// Removes a test's folders when it ends without failing, and keeps them when it fails (to be
+// looked at) or when SLAMKIT_KEEP_TEST_FILES is set: the suites render thousands of frames,
+// and a whole run left 1.5 GB behind.
+class RemoveFoldersOfPassedTests : public ::testing::EmptyTestEventListener {
+  void OnTestEnd(const ::testing::TestInfo& test) override {
+    const char* keep = std::getenv("SLAMKIT_KEEP_TEST_FILES");
+    if (!test.result()->Failed() && !(keep && *keep)) {
+      for (const auto& folder : folders_of_running_test()) {
+        std::error_code ignored;
+        std::filesystem::remove_all(folder, ignored);
+      }
+    }
+    folders_of_running_test().clear();
+  }
+};
+
+// Registered when the test program starts, before gtest_main runs the tests.
+const bool kRemovalRegistered = [] {
+  ::testing::UnitTest::GetInstance()->listeners().Append(new RemoveFoldersOfPassedTests);
+  return true;
+}();
+
+}  // namespace
+
 std::filesystem::path temp_dir(const std::string& tag) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = tag;
@@ -39,6 +73,7 @@ std::filesystem::path temp_dir(const std::string& tag) {
   const auto dir = std::filesystem::temp_directory_path() / "slamkit_tests" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  if (info) folders_of_running_test().push_back(dir);
   return dir;
 }
 

@@ -22,7 +22,8 @@ std::string read_text(const std::filesystem::path& file);
 // the browser, arrays embedded in report pages.
 std::string base64_decode(const std::string& text);
 
-// A fresh empty folder under the system temp dir, unique per test.
+// A fresh empty folder under the system temp dir, unique per test; removed when the test
+// passes, kept when it fails or when SLAMKIT_KEEP_TEST_FILES is set.
 std::filesystem::path temp_dir(const std::string& tag);
 
 // Runs the slamkit executable with the given arguments; returns its exit code and puts
