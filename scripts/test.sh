@@ -15,6 +15,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 ci=false
 [[ "${CI:-}" == "true" ]] && ci=true
+# A full disk makes some test fail far from the cause: say so first (docs/usage.md#tests).
+df -Pm -- "$root" "${TMPDIR:-/tmp}" | awk 'NR > 1 && !seen[$6]++ && $4 < 4096 {
+  printf "test: warning: only %d MB free on %s; a whole test run needs about 4 GB\n", $4, $6 }' || true
 if $ci; then
   "$root/scripts/setup.sh" --all --browser --werror --test-tools --with-slurm
 else
