@@ -30,6 +30,14 @@ int pairs_with_depth(const PreparedFrame& frame, const std::vector<Match>& match
   }));
 }
 
+// A keypoint as motion-only BA measures it; the caller puts in its matched point.
+PointObservation keypoint_observation(const PreparedFrame& frame, int keypoint) {
+  const size_t k = size_t(keypoint);
+  const int octave = frame.features.keypoints[k].octave;
+  return {Eigen::Vector3d::Zero(), frame.features.undistorted[k], frame.keypoint_depths[k],
+          frame.features.pyramid.scales[size_t(octave)]};
+}
+
 }  // namespace
 
 Tracker::Tracker(const Camera& camera, const Settings& settings, Map& map)
@@ -418,11 +426,8 @@ void Tracker::refine_pose(const PreparedFrame& frame, PoseEstimate& estimate,
   if (int(estimate.inliers.size()) < needed) return;
   std::vector<PointObservation> observations;
   for (const Match& m : estimate.inliers) {
-    const cv::KeyPoint& kp = frame.features.keypoints[size_t(m.keypoint)];
-    observations.push_back({map_.point(m.point_id).p_w,
-                            frame.features.undistorted[size_t(m.keypoint)],
-                            frame.keypoint_depths[size_t(m.keypoint)],
-                            frame.features.pyramid.scales[size_t(kp.octave)]});
+    observations.push_back(keypoint_observation(frame, m.keypoint));
+    observations.back().p_w = map_.point(m.point_id).p_w;
   }
   const PoseRefinement refined = motion_only_ba(observations, camera_, estimate.T_w_c, ba);
   if (!refined.ok) return;  // the solver's estimate stands (dense alignment needs no points)
@@ -440,11 +445,9 @@ std::vector<MatchedKeypoint> Tracker::matched_keypoints(const PreparedFrame& fra
   std::vector<MatchedKeypoint> matched;
   matched.reserve(inliers.size());
   for (const Match& m : inliers) {
-    const Eigen::Vector2d& uv = frame.features.undistorted[size_t(m.keypoint)];
-    const int octave = frame.features.keypoints[size_t(m.keypoint)].octave;
-    matched.push_back({m.point_id, float(uv.x()), float(uv.y()),
-                       frame.keypoint_depths[size_t(m.keypoint)],
-                       float(frame.features.pyramid.scales[size_t(octave)])});
+    const PointObservation o = keypoint_observation(frame, m.keypoint);
+    matched.push_back({m.point_id, float(o.uv.x()), float(o.uv.y()), float(o.depth),
+                       float(o.sigma)});
   }
   return matched;
 }
