@@ -43,8 +43,8 @@ namespace {
 // Freiburg 1 and 2 are Kinects (v1), whose colour camera has a rolling shutter. TUM publishes no
 // readout time; 30 ms (about a frame period at 30 Hz) is the kinect sensor model's assumption
 // (docs/sensor.md), and Kerl et al. (ICCV 2015) simulate such a camera with 28 ms. With frame
-// refinement any value from 20 to 33 ms lowers fr2/desk's ATE by a quarter or more
-// (docs/experiments.md).
+// refinement every value from 20 to 33 ms lowers the ATE of fr1/desk and of fr2/desk at both
+// depth scales; fr2/desk's at 5208 by a quarter or more (docs/experiments.md).
 constexpr double kKinectReadoutTime = 0.030;
 
 }  // namespace
