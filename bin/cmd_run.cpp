@@ -29,6 +29,7 @@ struct RunArgs {
   bool evaluate = true;
   bool plot = true;
   bool ascii = false;
+  bool mesh = false;
   bool loops = true;
   std::string vocabulary_file;
   bool allow_out_in_sequence = false;
@@ -68,12 +69,21 @@ void print_back_end_summary(const TumSequence& seq, const Settings& settings,
   if (settings.optimization.refine_frames)
     std::printf("refinement  %d of %zu frames solved again against the final map, %.2f s\n",
                 result.refined_frames, result.frames.size(), t.refine);
-  if (result.fusion.frames > 0)
+  const FusionReport& fused = result.fusion;
+  if (fused.frames > 0 && fused.method == MapMethod::kTsdf)
+    std::printf(
+        "fused map   %zu frames: %zu depth samples into a %.0f mm TSDF (%zu blocks, %.0f MB), "
+        "%zu surface points%s, %.2f s\n",
+        fused.frames, fused.raw_points, settings.map.voxel_size * 1000, fused.blocks,
+        fused.volume_mb, fused.points,
+        fused.triangles > 0 ? (", " + std::to_string(fused.triangles) + " triangles").c_str() : "",
+        t.fusion);
+  else if (fused.frames > 0)
     std::printf(
         "fused map   %zu frames: %zu points raw, %zu after the %.0f mm voxel grid, %zu after "
         "outlier removal, %.2f s\n",
-        result.fusion.frames, result.fusion.raw_points, result.fusion.after_voxel_grid,
-        settings.map.voxel_size * 1000, result.fusion.after_outlier_removal, t.fusion);
+        fused.frames, fused.raw_points, fused.after_voxel_grid, settings.map.voxel_size * 1000,
+        fused.points, t.fusion);
   if (result.fusion.beyond_grid > 0)
     std::fprintf(stderr,
                  "warning: %zu map points lie over 2^20 voxels (10 km at 1 cm) from the origin and "
@@ -107,6 +117,7 @@ void run(const RunArgs& args) {
   if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
   if (args.ascii) settings.map.binary_ply = false;
+  if (args.mesh) settings.map.mesh = true;
   if (!args.loops) settings.loop.enabled = false;
   if (!args.report) settings.report.enabled = false;
   std::optional<Vocabulary> vocabulary;
@@ -130,6 +141,8 @@ void run(const RunArgs& args) {
     std::printf("output      %s\n", args.out.c_str());
     if (result.fusion.frames > 0)
       std::printf("map         %s\n", (std::filesystem::path(args.out) / "map.ply").c_str());
+    if (result.fusion.triangles > 0)
+      std::printf("mesh        %s\n", (std::filesystem::path(args.out) / "mesh.ply").c_str());
     return result.seconds;
   });
   // A view of the finished folder, written after run.json says it is complete.
@@ -152,7 +165,9 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
   add_lost_frames_option(cmd, args->lost_frames);
-  cmd->add_flag("--ascii", args->ascii, "Write map.ply as ASCII (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, "Write map.ply (and mesh.ply) as ASCII (default: binary)");
+  cmd->add_flag("--mesh", args->mesh,
+                "Also write mesh.ply: the TSDF's surface as triangles (map.mesh)");
   cmd->add_flag("!--no-loops", args->loops, "Skip the loop pass (place recognition, pose graph)");
   cmd->add_flag("!--no-report", args->report, "Do not write report.html (the run's page)");
   cmd->add_option("--vocabulary", args->vocabulary_file,

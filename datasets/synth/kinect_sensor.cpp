@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "core/depth_noise.h"
 #include "core/error.h"
 
 namespace slamkit::synth {
@@ -26,13 +27,7 @@ std::vector<bool> KinectSettings::default_effects() {
   return on;
 }
 
-double KinectSettings::axial_sigma(double z, double theta) {
-  // The angular term grows without bound towards grazing; theta is capped where the sensor
-  // stops returning depth anyway.
-  const double t = std::min(theta, 80.0 * M_PI / 180.0);
-  return 0.0012 + 0.0019 * (z - 0.4) * (z - 0.4) +
-         0.0001 / std::sqrt(z) * t * t / ((M_PI / 2 - t) * (M_PI / 2 - t));
-}
+double KinectSettings::axial_sigma(double z, double theta) { return kinect_axial_sigma(z, theta); }
 
 double KinectSettings::lateral_sigma_px(double theta) {
   const double t = std::min(theta, 80.0 * M_PI / 180.0);

@@ -1,8 +1,7 @@
 #pragma once
-// The point-cloud map (docs/method.md#map-fusion): frames back-projected with their final
-// poses into one coloured cloud, down-sampled on a voxel grid, isolated voxels left out,
-// written as PLY. The only module that includes PCL (in its .cpp files: callers never see PCL
-// types).
+// The map (docs/method.md#map-fusion): frames fused with their final poses into a TSDF whose
+// surface is the map (or each voxel's centroid of the back-projected points), written as PLY.
+// The only module that includes PCL (in its .cpp files: callers never see PCL types).
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <functional>
@@ -33,32 +32,41 @@ struct FusionFrame {
 };
 
 struct FusionReport {
+  MapMethod method = MapMethod::kTsdf;
   size_t frames = 0;
-  size_t raw_points = 0;        // back-projected, before any filter
-  size_t beyond_grid = 0;       // of those, so far from the origin that no voxel holds them
-  size_t after_voxel_grid = 0;  // occupied voxels
-  size_t after_outlier_removal = 0;
+  size_t raw_points = 0;   // depth samples taken (centroids: back-projected, before any filter)
+  size_t beyond_grid = 0;  // of those, so far from the origin that no voxel holds them
+  size_t points = 0;       // written to the map
+  // Centroids: occupied voxels, before outlier removal.
+  size_t after_voxel_grid = 0;
+  // TSDF: blocks of 8^3 voxels allocated, their memory; triangles in the mesh when one is made.
+  size_t blocks = 0;
+  double volume_mb = 0;
+  size_t triangles = 0;
   double seconds = 0;
 };
 
-// Back-projects the frames (their samples, or loaded again from the sequence, settings.batch_frames
-// at a time in parallel) into a voxel grid of settings.voxel_size that keeps each voxel's sums
-// (voxel_map.h), so memory grows with the voxels, not the frames (each frame's samples are
-// released once binned); then takes every voxel's
-// centroid and mean colour, leaves out voxels with few occupied neighbours, and writes `ply_path`
-// (binary unless !settings.binary_ply). The output is the same at any thread count. progress(done,
-// total) is called on the calling thread.
+// Fuses the frames into a map and writes it as `ply_path` (binary unless !settings.binary_ply),
+// and the mesh as `mesh_path` when settings.mesh (TSDF only). The output is the same at any
+// thread count. progress(done, total) is called on the calling thread. Frames are loaded
+// (unless their samples were kept) settings.batch_frames at a time in parallel, and each
+// frame's samples are released once fused.
 //
-// Every settings.pixel_stride-th raw pixel (u, v) is undistorted once for the whole grid
-// (the depth is registered to colour in the raw lens geometry), so a point is
-// z * ((u' - cx) / fx, (v' - cy) / fy, 1) at the ideal pixel (u', v'); depth 0 or beyond
-// settings.max_depth is skipped. The PLY is written as ply_cloud.h describes, through a
-// temporary file renamed into place.
+// TSDF (tsdf_frame.h, tsdf_volume.h, tsdf_surface.h): each frame's samples, in ideal pinhole
+// geometry, edges left out, weighted by the depth noise model, integrated in frame order; the
+// map is the field's zero-crossing surface with normals and colours.
+// Centroids: each sample back-projected (every settings.pixel_stride-th raw pixel undistorted
+// once, depth 0 or beyond settings.max_depth skipped) into a voxel grid of settings.voxel_size
+// that keeps each voxel's sums (voxel_map.h), so memory grows with the voxels, not the frames;
+// then every voxel's centroid and mean colour, leaving out voxels with few occupied neighbours.
+//
+// The PLY is written as ply_cloud.h describes, through a temporary file renamed into place.
 // Throws InputError naming the sequence folder for a frame index out of range, the image for
 // an unreadable frame, ply_path when it cannot be written (checked before any work) or when
 // no frame has valid depth, and "fusion settings" for a setting out of range.
 FusionReport fuse_map(const TumSequence& sequence, std::vector<FusionFrame> frames,
                       const FusionSettings& settings, const std::filesystem::path& ply_path,
+                      const std::filesystem::path& mesh_path = {},
                       const std::function<void(size_t, size_t)>& progress = {});
 
 // The camera centres of `frames` as a small binary PLY (one vertex each, coloured from blue

@@ -17,7 +17,10 @@ using Rgb8 = std::array<uint8_t, 3>;  // red, green, blue
 
 struct PlyCloud {
   std::vector<Eigen::Vector3f> points;
-  std::vector<Rgb8> colours;  // one per point
+  std::vector<Rgb8> colours;             // one per point
+  std::vector<Eigen::Vector3f> normals;  // one per point, or none
+  // Faces as vertex index triples (a mesh); none for a point cloud.
+  std::vector<std::array<uint32_t, 3>> triangles;
 };
 
 // Writes to a temporary file in the same folder (created if missing) and renames it into

@@ -335,7 +335,10 @@ void visit_fields(LoopSettings& s, V& v) {
 
 template <class V>
 void visit_fields(FusionSettings& s, V& v) {
-  v.field("enabled", s.enabled, from_slamkit("fuse the point-cloud map after the run"));
+  v.field("enabled", s.enabled, from_slamkit("fuse the map after the run"));
+  v.field("method", s.method,
+          from_slamkit("tsdf: the zero-crossing surface of a TSDF (as Open3D's); centroids: "
+                       "each voxel's mean point"));
   v.field("frame_step", s.frame_step, at_least(0),
           from_slamkit("frames back-projected: 0 = the keyframes, n > 0 = every n-th frame"));
   v.field("pixel_stride", s.pixel_stride, at_least(1), from_slamkit("every n-th pixel in u and v"));
@@ -345,9 +348,20 @@ void visit_fields(FusionSettings& s, V& v) {
           from_slamkit("metres: Kinect noise grows with z^2 (4 mm at 1.5 m)"));
   v.field("voxel_size", s.voxel_size, above(0), from_slamkit("metres, the voxel grid's leaf"));
   v.field("batch_frames", s.batch_frames, at_least(1),
-          from_slamkit("frames binned in parallel at a time (bounds memory)"));
+          from_slamkit("frames loaded in parallel at a time (bounds memory)"));
+  v.field("truncation", s.truncation, above(0),
+          from_slamkit("tsdf: metres, the signed distance's cut (Open3D's examples' 4 cm)"));
+  v.field("noise_weighting", s.noise_weighting,
+          from_slamkit("tsdf: weigh each depth by 1/sigma^2 of the Kinect noise model"));
+  v.field("edge_jump", s.edge_jump, at_least(0),
+          from_slamkit("tsdf: leave out depth with a neighbour this share nearer or farther"));
+  v.field("smoothing_radius", s.smoothing_radius, {0, 10},
+          from_slamkit("tsdf: depth replaced by a plane fitted within this many samples; 0 = raw"));
+  v.field("min_weight", s.min_weight, at_least(0),
+          from_slamkit("tsdf: surface kept where it weighs this many head-on views at 1 m"));
+  v.field("mesh", s.mesh, from_slamkit("tsdf: also write mesh.ply (marching cubes)"));
   v.field("remove_outliers", s.remove_outliers,
-          from_slamkit("leave out voxels with few occupied neighbours"));
+          from_slamkit("centroids: leave out voxels with few occupied neighbours"));
   v.field("outlier_neighbour_share", s.outlier_neighbour_share, Range{0, 1},
           from_slamkit("a voxel with fewer occupied neighbours than this share of the median's "
                        "is left out"));
@@ -398,7 +412,7 @@ void visit_fields(Settings& s, V& v) {
   v.section("mapping", s.mapping, "map upkeep at each new keyframe (ORB-SLAM2's LocalMapping)");
   v.section("optimization", s.optimization, "bundle adjustment");
   v.section("loop", s.loop, "loop closing");
-  v.section("map", s.map, "the point-cloud map");
+  v.section("map", s.map, "the map: a TSDF's surface (points, optionally a mesh)");
   v.section("vocabulary", s.vocabulary,
             "the bag-of-words vocabulary: training of the k-ary tree, its direct index");
   v.section("pipeline", s.pipeline, "the batch engine");
@@ -410,9 +424,12 @@ inline constexpr EnumNames<FastType, 2> kFastTypeNames = {
     {{FastType::kFast9, "fast9"}, {FastType::kFast12, "fast12"}}};
 inline constexpr EnumNames<MatcherBackend, 2> kMatcherBackendNames = {
     {{MatcherBackend::kFlannLsh, "flann_lsh"}, {MatcherBackend::kBruteForce, "brute_force"}}};
+inline constexpr EnumNames<MapMethod, 2> kMapMethodNames = {
+    {{MapMethod::kTsdf, "tsdf"}, {MapMethod::kCentroids, "centroids"}}};
 inline constexpr EnumNames<LostFrames, 2> kLostFramesNames = {
     {{LostFrames::kOmit, "omit"}, {LostFrames::kMotionModel, "motion-model"}}};
 inline const auto& enum_names(FastType) { return kFastTypeNames; }
+inline const auto& enum_names(MapMethod) { return kMapMethodNames; }
 inline const auto& enum_names(LostFrames) { return kLostFramesNames; }
 inline const auto& enum_names(MatcherBackend) { return kMatcherBackendNames; }
 

@@ -164,7 +164,7 @@ FusionReport fuse_final_map(const Map& map, const std::vector<TrackedFrame>& tra
   write_camera_poses_ply(ply_path.parent_path() / "keyframe_centres.ply", keyframes);
   samples = KeyframeSamples();  // `frames` holds the samples now: fusion frees each once fused
   return fuse_map(sequence, std::move(frames), settings.map, ply_path,
-                  [&](size_t done, size_t total) {
+                  ply_path.parent_path() / "mesh.ply", [&](size_t done, size_t total) {
                     if (progress) progress("map", done, total);
                   });
 }

@@ -89,11 +89,11 @@ TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
   const FusionReport report = fuse_map(sequence(), frames, settings, dir / "map.ply");
   settings.binary_ply = false;
   const FusionReport ascii_report = fuse_map(sequence(), frames, settings, dir / "ascii.ply");
-  EXPECT_EQ(ascii_report.after_outlier_removal, report.after_outlier_removal);
+  EXPECT_EQ(ascii_report.points, report.points);
 
   const PlyFile binary = parse_ply(dir / "map.ply");
   EXPECT_EQ(binary.format, "binary_little_endian");
-  EXPECT_EQ(binary.vertices, report.after_outlier_removal);
+  EXPECT_EQ(binary.vertices, report.points);
   const PlyCloud pcl_read = read_ply_cloud(dir / "map.ply");
   ASSERT_EQ(pcl_read.points.size(), binary.cloud.points.size());
   EXPECT_EQ(pcl_read.points, binary.cloud.points);
@@ -108,8 +108,8 @@ TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
   }
   EXPECT_EQ(report.frames, frames.size());
   EXPECT_GT(report.raw_points, report.after_voxel_grid);
-  EXPECT_GE(report.after_voxel_grid, report.after_outlier_removal);
-  EXPECT_GT(report.after_outlier_removal, report.after_voxel_grid * 9 / 10);
+  EXPECT_GE(report.after_voxel_grid, report.points);
+  EXPECT_GT(report.points, report.after_voxel_grid * 9 / 10);
 }
 
 TEST(MapFusion, SameBytesAtOneAndTwoThreads) {
@@ -124,7 +124,7 @@ TEST(MapFusion, SameBytesAtOneAndTwoThreads) {
   omp_set_num_threads(2);
   const FusionReport two = fuse_map(sequence(), frames, settings, dir / "two.ply");
   omp_set_num_threads(threads);
-  EXPECT_EQ(one.after_outlier_removal, two.after_outlier_removal);
+  EXPECT_EQ(one.points, two.points);
   EXPECT_TRUE(file_bytes(dir / "one.ply") == file_bytes(dir / "two.ply"));
 }
 
@@ -160,9 +160,9 @@ TEST(MapFusion, GroundtruthPosesGiveAnAccurateAndCompleteMap) {
       "outliers\naccuracy mean %.4f median %.4f p95 %.4f max %.4f m; "
       "completeness %.3f of %zu samples\n",
       report.frames, report.seconds, report.raw_points, report.after_voxel_grid,
-      report.after_outlier_removal, q.accuracy_mean, q.accuracy_median, q.accuracy_p95,
+      report.points, q.accuracy_mean, q.accuracy_median, q.accuracy_p95,
       q.accuracy_max, q.completeness, q.surface_samples);
-  EXPECT_EQ(q.map_points, report.after_outlier_removal);
+  EXPECT_EQ(q.map_points, report.points);
   EXPECT_LT(q.accuracy_median, 0.01);
   // Most points lie far off, where single-frame depth noise is 8-14 mm (2.5-3 m).
   EXPECT_LT(q.accuracy_p95, 0.03);
@@ -229,7 +229,7 @@ TEST(MapFusion, EachVoxelIsTheMeanOfAllItsPointsWhateverTheBatches) {
   const FusionReport doubled = fuse_map(sequence(), twice, settings, dir / "twice.ply");
   EXPECT_EQ(doubled.raw_points, 2 * report.raw_points);
   EXPECT_EQ(doubled.after_voxel_grid, report.after_voxel_grid);
-  ASSERT_EQ(doubled.after_outlier_removal, report.after_outlier_removal);
+  ASSERT_EQ(doubled.points, report.points);
   const PlyCloud a = read_ply_cloud(dir / "map.ply"), b = read_ply_cloud(dir / "twice.ply");
   for (size_t i = 0; i < a.points.size(); ++i) {
     ASSERT_LT((a.points[i] - b.points[i]).cwiseAbs().maxCoeff(), 1e-5f) << i;

@@ -91,7 +91,7 @@ TEST(Run, SyntheticDesk600BackEndBeatsTheFrontEndAndWritesTheMap) {
   EXPECT_TRUE(r.run.global_ba_run);
   // map.ply reads back with PCL's reader, every point finite.
   const PlyCloud cloud = read_ply_cloud(out / "map.ply");
-  EXPECT_EQ(cloud.points.size(), r.run.fusion.after_outlier_removal);
+  EXPECT_EQ(cloud.points.size(), r.run.fusion.points);
   EXPECT_GT(cloud.points.size(), 10000u);
   for (const Eigen::Vector3f& p : cloud.points) ASSERT_TRUE(p.allFinite());
   // Against the true scene (the map aligned into groundtruth by the trajectory's alignment).
