@@ -84,6 +84,7 @@ std::vector<Eigen::Isometry3d> poses_of(const std::vector<FusionFrame>& frames) 
 TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
   const fs::path dir = test::temp_dir("layout");
   FusionSettings settings;
+  settings.method = MapMethod::kCentroids;
   settings.pixel_stride = 4;
   const std::vector<FusionFrame> frames = groundtruth_frames(sequence(), 4);
   const FusionReport report = fuse_map(sequence(), frames, settings, dir / "map.ply");
@@ -113,19 +114,34 @@ TEST(MapFusion, MapPlyHasTheLayoutViewersExpectInBinaryAndAscii) {
 }
 
 TEST(MapFusion, SameBytesAtOneAndTwoThreads) {
-  const fs::path dir = test::temp_dir("threads");
-  FusionSettings settings;
-  settings.batch_frames = 3;  // several batches
-  settings.pixel_stride = 3;
-  const std::vector<FusionFrame> frames = groundtruth_frames(sequence());
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const FusionReport one = fuse_map(sequence(), frames, settings, dir / "one.ply");
-  omp_set_num_threads(2);
-  const FusionReport two = fuse_map(sequence(), frames, settings, dir / "two.ply");
-  omp_set_num_threads(threads);
-  EXPECT_EQ(one.points, two.points);
-  EXPECT_TRUE(file_bytes(dir / "one.ply") == file_bytes(dir / "two.ply"));
+  for (const MapMethod method : {MapMethod::kTsdf, MapMethod::kCentroids}) {
+    const fs::path dir = test::temp_dir(method == MapMethod::kTsdf ? "threads_tsdf" : "threads");
+    FusionSettings settings;
+    settings.method = method;
+    settings.mesh = true;  // TSDF only
+    settings.batch_frames = 3;  // several batches
+    settings.pixel_stride = 3;
+    const std::vector<FusionFrame> frames = groundtruth_frames(sequence());
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const FusionReport one =
+        fuse_map(sequence(), frames, settings, dir / "one.ply", dir / "one_mesh.ply");
+    omp_set_num_threads(2);
+    const FusionReport two =
+        fuse_map(sequence(), frames, settings, dir / "two.ply", dir / "two_mesh.ply");
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one.points, two.points);
+    EXPECT_TRUE(file_bytes(dir / "one.ply") == file_bytes(dir / "two.ply"));
+    if (method == MapMethod::kTsdf) {
+      EXPECT_GT(one.triangles, one.points / 2);
+      EXPECT_TRUE(file_bytes(dir / "one_mesh.ply") == file_bytes(dir / "two_mesh.ply"));
+      const PlyCloud mesh = read_ply_cloud(dir / "one_mesh.ply");
+      EXPECT_EQ(mesh.triangles.size(), one.triangles);
+    } else {
+      EXPECT_EQ(one.triangles, 0u);
+      EXPECT_FALSE(fs::exists(dir / "one_mesh.ply"));
+    }
+  }
 }
 
 TEST(MapFusion, KeptSamplesGiveTheSameBytesAsLoadingAgain) {
@@ -218,6 +234,7 @@ TEST(MapFusion, DepthBeyondMaxDepthIsCut) {
 TEST(MapFusion, EachVoxelIsTheMeanOfAllItsPointsWhateverTheBatches) {
   const fs::path dir = test::temp_dir("voxel_means");
   FusionSettings settings;
+  settings.method = MapMethod::kCentroids;
   settings.batch_frames = 1;
   const std::vector<FusionFrame> once = groundtruth_frames(sequence());
   const FusionReport report = fuse_map(sequence(), once, settings, dir / "map.ply");
