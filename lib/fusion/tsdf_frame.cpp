@@ -50,14 +50,34 @@ uint16_t TsdfFrameMaker::weight_of(float z, float cos_incidence) const {
 std::vector<float> TsdfFrameMaker::smoothed(const std::vector<float>& z) const {
   if (smoothing_radius_ == 0) return z;
   const int w = intrinsics_.width, h = intrinsics_.height, r = smoothing_radius_;
+  const int window = (2 * r + 1) * (2 * r + 1);
   std::vector<float> out(z.size(), 0.0f);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const size_t k = size_t(j) * size_t(w) + size_t(i);
       const float d = z[k];
       if (d == 0) continue;
-      // Least squares plane z = a + b du + c dv over the neighbours on the same surface; its
-      // value at the sample, a, is their mean when the window is whole.
+      out[k] = d;
+      const float low = d - edge_jump_ * d, high = d + edge_jump_ * d;
+      const bool inside = i >= r && j >= r && i + r < w && j + r < h;
+      // A whole window on the surface (most samples): the plane's value at the sample is the
+      // window's mean.
+      if (inside) {
+        float sum = 0;
+        bool whole = true;
+        for (int dv = -r; dv <= r && whole; ++dv)
+          for (int du = -r; du <= r; ++du) {
+            const float other = z[size_t(j + dv) * size_t(w) + size_t(i + du)];
+            whole &= other >= low && other <= high;  // invalid samples (0) are below low
+            sum += other;
+          }
+        if (whole) {
+          out[k] = sum / float(window);
+          continue;
+        }
+      }
+      // Else the least squares plane z = a + b du + c dv over the neighbours on the surface,
+      // when they are at least half the window.
       Eigen::Matrix3f normal_matrix = Eigen::Matrix3f::Zero();
       Eigen::Vector3f rhs = Eigen::Vector3f::Zero();
       int count = 0;
@@ -66,20 +86,15 @@ std::vector<float> TsdfFrameMaker::smoothed(const std::vector<float>& z) const {
           const int ni = i + du, nj = j + dv;
           if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
           const float other = z[size_t(nj) * size_t(w) + size_t(ni)];
-          if (other == 0 || std::abs(other - d) > edge_jump_ * d) continue;
+          if (!(other >= low && other <= high)) continue;
           const Eigen::Vector3f row(1.0f, float(du), float(dv));
           normal_matrix += row * row.transpose();
           rhs += row * (other - d);
           ++count;
         }
-      out[k] = d;
-      const int window = (2 * r + 1) * (2 * r + 1);
-      if (count == window) {
-        out[k] = d + rhs[0] / float(count);
-      } else if (2 * count > window) {  // else too few on the surface: kept as it is
-        const Eigen::Vector3f plane = normal_matrix.ldlt().solve(rhs);
-        if (std::isfinite(plane[0])) out[k] = d + plane[0];
-      }
+      if (2 * count <= window) continue;
+      const Eigen::Vector3f plane = normal_matrix.ldlt().solve(rhs);
+      if (std::isfinite(plane[0])) out[k] = d + plane[0];
     }
   return out;
 }

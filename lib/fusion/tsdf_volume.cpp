@@ -117,22 +117,33 @@ void TsdfVolume::update(TsdfBlock& block, const TsdfFrame& frame,
       T_c_w * ((block.index.cast<float>() * block_size_).matrix() +
                Eigen::Vector3f::Constant(0.5f * voxel_size_));
   const float inverse_truncation = 1.0f / truncation_;
+  const float width = float(in.width), height = float(in.height);
   for (int z = 0; z < kTsdfBlockSide; ++z)
     for (int y = 0; y < kTsdfBlockSide; ++y) {
-      Eigen::Vector3f p = first + step.col(2) * float(z) + step.col(1) * float(y);
+      const Eigen::Vector3f row = first + step.col(2) * float(z) + step.col(1) * float(y);
+      // The row's eight projections first, without branches (the compiler vectorises this
+      // loop), then the updates: the nearest sample, or -1 outside the image or behind the
+      // camera. int() truncates, so negative coordinates are refused first.
+      std::array<float, kTsdfBlockSide> depth_of;
+      std::array<int32_t, kTsdfBlockSide> sample_of;
+      for (int x = 0; x < kTsdfBlockSide; ++x) {
+        const float px = row.x() + step(0, 0) * float(x), py = row.y() + step(1, 0) * float(x),
+                    pz = row.z() + step(2, 0) * float(x);
+        const float inverse_z = 1.0f / pz;
+        const float u = in.fx * px * inverse_z + in.cx + 0.5f;
+        const float v = in.fy * py * inverse_z + in.cy + 0.5f;
+        const bool inside = pz > 0 && u >= 0 && v >= 0 && u < width && v < height;
+        sample_of[size_t(x)] = inside ? int32_t(v) * in.width + int32_t(u) : -1;
+        depth_of[size_t(x)] = pz;
+      }
       TsdfVoxel* voxel = &block.voxels[size_t(TsdfBlock::voxel_at(0, y, z))];
-      for (int x = 0; x < kTsdfBlockSide; ++x, p += step.col(0), ++voxel) {
-        if (p.z() <= 0) continue;
-        const float inverse_z = 1.0f / p.z();
-        const float u = in.fx * p.x() * inverse_z + in.cx + 0.5f;
-        const float v = in.fy * p.y() * inverse_z + in.cy + 0.5f;
-        // The nearest sample; int() truncates, so negative coordinates are refused first.
-        if (!(u >= 0 && v >= 0 && u < float(in.width) && v < float(in.height))) continue;
-        const size_t k = size_t(int(v)) * size_t(in.width) + size_t(int(u));
+      for (int x = 0; x < kTsdfBlockSide; ++x, ++voxel) {
+        if (sample_of[size_t(x)] < 0) continue;
+        const size_t k = size_t(sample_of[size_t(x)]);
         const float d = frame.depth[k];
         if (d == 0) continue;
-        const float sdf = d - p.z();  // along the optical axis, as KinectFusion's
-        if (sdf < -truncation_) continue;  // hidden behind the surface
+        const float sdf = d - depth_of[size_t(x)];  // along the optical axis, as KinectFusion's
+        if (sdf < -truncation_) continue;           // hidden behind the surface
         const float measured = std::min(1.0f, sdf * inverse_truncation);
         const uint32_t w = frame.weight[k];
         const uint32_t before = voxel->weight, total = before + w;
