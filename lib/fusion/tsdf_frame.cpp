@@ -23,6 +23,8 @@ TsdfFrameMaker::TsdfFrameMaker(const Camera& camera, const FusionSettings& setti
   intrinsics_ = {raw_width_,           (camera.height + s - 1) / s,
                  float(camera.fx / s), float(camera.fy / s),
                  float(camera.cx / s), float(camera.cy / s)};
+  for (int c = 0; c <= kIncidenceSteps; ++c)
+    incidence_.push_back(float(std::acos(double(c) / kIncidenceSteps)));
   const int w = intrinsics_.width, h = intrinsics_.height;
   rays_.reserve(size_t(w * h));
   for (int j = 0; j < h; ++j)
@@ -42,9 +44,10 @@ TsdfFrameMaker::TsdfFrameMaker(const Camera& camera, const FusionSettings& setti
 
 uint16_t TsdfFrameMaker::weight_of(float z, float cos_incidence) const {
   if (!noise_weighting_) return uint16_t(kTsdfWeightUnits);
-  const double sigma = kinect_axial_sigma(z, double(std::acos(cos_incidence)));
+  const float theta = incidence_[size_t(cos_incidence * float(kIncidenceSteps) + 0.5f)];
+  const double sigma = kinect_axial_sigma(z, theta);
   const double weight = (kReferenceSigma * kReferenceSigma) / (sigma * sigma);
-  return uint16_t(std::clamp(std::lround(weight * kTsdfWeightUnits), 1L, 65535L));
+  return uint16_t(std::clamp(weight * kTsdfWeightUnits + 0.5, 1.0, 65535.0));
 }
 
 std::vector<float> TsdfFrameMaker::smoothed(const std::vector<float>& z) const {

@@ -47,6 +47,9 @@ class TsdfFrameMaker {
   int raw_width_ = 0;            // samples per row of FusionSamples
   std::vector<int32_t> source_;  // per ideal sample: its raw sample (-1: outside); empty = same
   std::vector<Eigen::Vector3f> rays_;  // per ideal sample: (x/z, y/z, 1)
+  // The incidence angle at cos = i / kIncidenceSteps (within 0.002 rad of acos's).
+  static constexpr int kIncidenceSteps = 1024;
+  std::vector<float> incidence_;
   float max_depth_, edge_jump_;
   int smoothing_radius_;
   bool noise_weighting_;
