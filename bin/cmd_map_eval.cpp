@@ -1,6 +1,7 @@
-// slamkit map-eval: judges a point-cloud map (map.ply) against the true scene of the synthetic
-// sequence it was made from: accuracy (map point to surface distances) and completeness (the
-// share of the surface the groundtruth cameras saw that the map covers).
+// slamkit map-eval: judges a map (map.ply, or any PLY point cloud or mesh) against the true
+// scene of the synthetic sequence it was made from: accuracy (map point to surface distances)
+// and completeness (the share of the surface the groundtruth cameras saw that the map covers).
+// A mesh is judged by samples of its surface.
 #include <cstdio>
 #include <memory>
 
@@ -46,7 +47,9 @@ const bool kRegistered = register_command([](CLI::App& root) {
   auto args = std::make_shared<MapEvalArgs>();
   CLI::App* cmd = root.add_subcommand(
       "map-eval", "Judge a map (PLY) against the true scene of a synthetic sequence");
-  cmd->add_option("map", args->map, "Point-cloud map (PLY), e.g. a run's map.ply")->required();
+  cmd->add_option("map", args->map,
+                  "Map as a PLY point cloud or mesh (its surface sampled), e.g. a run's map.ply")
+      ->required();
   cmd->add_option("sequence", args->sequence, "Synthetic sequence folder (from slamkit synth)")
       ->required();
   cmd->add_option("--trajectory", args->trajectory,

@@ -217,6 +217,7 @@ void add_map_quality_json(nlohmann::json& metrics, const MapQuality& q) {
                       {"max_incidence_deg", s.max_incidence_deg},
                       {"sample_cell", s.sample_cell},
                       {"radius", s.radius}}}};
+  if (q.mesh_triangles > 0) metrics["map"]["mesh_triangles"] = q.mesh_triangles;
 }
 
 }  // namespace slamkit::synth

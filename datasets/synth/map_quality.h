@@ -57,6 +57,9 @@ struct MapQualitySettings {
 
 struct MapQuality {
   size_t map_points = 0;
+  // The map was a mesh of this many triangles, judged as map_points samples of its surface
+  // (set by map-eval; 0: a point cloud, judged as its points).
+  size_t mesh_triangles = 0;
   // Accuracy: distance of each map point to the nearest true surface, metres.
   double accuracy_mean = 0, accuracy_median = 0, accuracy_p95 = 0, accuracy_max = 0;
   // Completeness: covered / surface_samples.
@@ -75,7 +78,8 @@ MapQuality evaluate_map_quality(const std::vector<Eigen::Vector3f>& map_points,
 
 // Sets metrics["map"] (a run's metrics.json) to the numbers and the settings behind them:
 // {"points", "accuracy": {"mean", "median", "p95", "max"}, "completeness", "surface_samples",
-//  "covered_samples", "views", "settings": {...}}; distances in metres.
+//  "covered_samples", "views", "settings": {...}}, and "mesh_triangles" for a mesh; distances
+// in metres.
 void add_map_quality_json(nlohmann::json& metrics, const MapQuality& quality);
 
 }  // namespace slamkit::synth

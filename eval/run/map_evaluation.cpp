@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "eval/alignment.h"
 #include "eval/association.h"
-#include "fusion/ply_cloud.h"
+#include "eval/run/map_points.h"
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"
 
@@ -44,14 +44,22 @@ std::optional<synth::MapQuality> evaluate_map(
   const TumSequence sequence = TumSequence::open(sequence_folder);
   if (!sequence.groundtruth())
     throw_input_error((sequence_folder / "groundtruth.txt").string(), "not found");
-  std::vector<Eigen::Vector3f> points = read_ply_points(map);
-  if (trajectory) align_into_groundtruth(points, *sequence.groundtruth(), *trajectory);
-  return synth::evaluate_map_quality(points, synth::make_scene(*info), groundtruth_poses(sequence),
-                                     sequence.camera(), settings);
+  MapPoints map_points = read_map_points(map);
+  if (trajectory) align_into_groundtruth(map_points.points, *sequence.groundtruth(), *trajectory);
+  synth::MapQuality quality =
+      synth::evaluate_map_quality(map_points.points, synth::make_scene(*info),
+                                  groundtruth_poses(sequence), sequence.camera(), settings);
+  quality.mesh_triangles = map_points.mesh_triangles;
+  return quality;
 }
 
 void print_map_quality(const synth::MapQuality& q) {
   const synth::MapQualitySettings& s = q.settings;
+  if (q.mesh_triangles > 0)
+    std::printf(
+        "map mesh    judged a mesh of %zu triangles sampled as %zu points (its vertices and "
+        "samples at most %.1f mm apart)\n",
+        q.mesh_triangles, q.map_points, 1000 * kMeshSampleSpacing);
   std::printf(
       "map quality accuracy (distance to the true surface of %zu points): mean %.1f mm, median "
       "%.1f mm, p95 %.1f mm, max %.1f mm\n",

@@ -1,6 +1,7 @@
 #pragma once
-// Map quality of a point-cloud map made from a synthetic sequence (`slamkit map-eval`, and
-// `slamkit run` on synthetic input): accuracy and completeness against the true scene.
+// Map quality of a map (point cloud or mesh) made from a synthetic sequence (`slamkit
+// map-eval`, and `slamkit run` on synthetic input): accuracy and completeness against the true
+// scene.
 #include <filesystem>
 #include <optional>
 
@@ -8,7 +9,8 @@
 
 namespace slamkit::eval {
 
-// nullopt when `sequence` is not synthetic (no synthetic.yaml). A map made in the estimate's
+// nullopt when `sequence` is not synthetic (no synthetic.yaml). The map is a PLY point cloud
+// or mesh, read and checked by read_map_points (map_points.h). A map made in the estimate's
 // own world frame (a run's map.ply: the first camera is the origin) is first brought into the
 // groundtruth frame by the SE(3) alignment of `trajectory` to groundtruth (ATE's alignment);
 // without a trajectory the map must already be in the groundtruth frame.

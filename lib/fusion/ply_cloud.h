@@ -1,10 +1,15 @@
 #pragma once
-// Coloured point clouds as PLY files, read and written through PCL (inside ply_cloud.cpp only,
-// so callers see plain Eigen types). The files are what Open3D, CloudCompare and MeshLab read:
-//   ply / format binary_little_endian 1.0 (or ascii 1.0) / comment, obj_info lines /
-//   element vertex N / property float x, y, z / property uchar red, green, blue /
-//   element face 0 / end_header, then N vertices (15 bytes each in binary).
-// ASCII files carry the 6 significant digits PCL's writer prints.
+// Coloured point clouds and triangle meshes as PLY files, read and written by hand
+// (ply_reader.cpp, ply_writer.cpp), so callers see plain Eigen types.
+// Written: the header every reader takes (Open3D, CloudCompare, MeshLab, PCL):
+//   ply / format binary_little_endian 1.0 (or ascii 1.0) / element vertex N /
+//   property float x, y, z / [property float nx, ny, nz] / property uchar red, green, blue /
+//   [element face M / property list uchar int vertex_indices] / end_header
+// then N vertices (15 bytes each in binary, 27 with normals) and M triangles. ASCII files
+// carry the shortest text that reads back as the same float.
+// Read: ascii and binary of either byte order; x, y, z of any scalar type; colours as uchar,
+// ushort or float 0..1 (also diffuse_red, ...); normals nx, ny, nz; faces as lists of vertex
+// indices, polygons fanned into triangles; other properties and elements skipped.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -25,11 +30,13 @@ struct PlyCloud {
 
 // Writes to a temporary file in the same folder (created if missing) and renames it into
 // place, so a reader never sees half a file. Throws InputError naming the path when the
-// folder or the file cannot be written, or when points and colours differ in number.
+// folder or the file cannot be written, when the cloud is empty, when colours (or normals,
+// if any) are not one per point, or when a triangle refers to a vertex the cloud lacks.
 void write_ply_cloud(const std::filesystem::path& path, const PlyCloud& cloud, bool binary = true);
 
-// Throws InputError naming the path when the file is missing or not a PLY point cloud.
-// Colours are 0 when the file has none.
+// Throws InputError naming the path, the reason and, in the header or an ASCII body, the line
+// when the file is missing or not a PLY file slamkit can read in full: values are never made
+// up. Colours are 0 when the file has none; normals are empty when it has none.
 PlyCloud read_ply_cloud(const std::filesystem::path& path);
 std::vector<Eigen::Vector3f> read_ply_points(const std::filesystem::path& path);
 

@@ -285,9 +285,10 @@ TEST(BadInputMatrix, MapEval) {
     write(f / "synthetic.yaml", "scene: furnished_room\npreset: desk\nframes: 3\nseed: 1\n");
   });
   const fs::path map = s.root() / "map.ply", est = s.root() / "est.txt";
-  write(map,
-        "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-        "property float z\nend_header\n0 0 1\n");
+  const std::string xyz_header =
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n";
+  write(map, xyz_header + "0 0 1\n0 1 1\n");
   const auto args = [&](const fs::path& m, const fs::path& sequence, const std::string& more) {
     return "map-eval " + m.string() + " " + sequence.string() + more;
   };
@@ -298,7 +299,13 @@ TEST(BadInputMatrix, MapEval) {
       {"unreadable file", args(s.root() / "folder.ply", seq, ""), s.root() / "folder.ply"});
   write(s.root() / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 9\nend_header\n1 2\n");
   expect_one_line_naming_the_file(
-      {"malformed line", args(s.root() / "bad.ply", seq, ""), s.root() / "bad.ply"});
+      {"malformed line", args(s.root() / "bad.ply", seq, ""), s.root() / "bad.ply", 3});
+  write(s.root() / "nan.ply", xyz_header + "0 0 1\nnan 1 1\n");
+  expect_one_line_naming_the_file(
+      {"non-finite value", args(s.root() / "nan.ply", seq, ""), s.root() / "nan.ply"});
+  write(s.root() / "origin.ply", xyz_header + "0 0 0\n0 0 0\n");
+  expect_one_line_naming_the_file(
+      {"wrong input", args(s.root() / "origin.ply", seq, ""), s.root() / "origin.ply"});
   const fs::path bad_info = s.variant("bad_info", [](auto f) {
     write(f / "synthetic.yaml", "scene: furnished_room\npreset: [desk\n");
   });
