@@ -14,7 +14,7 @@ namespace {
 struct ReportArgs {
   std::vector<std::string> runs;
   std::string out;
-  int point_budget = ReportSettings{}.point_budget;
+  ReportSettings budgets;  // its point and triangle budgets
 };
 
 const bool kRegistered = register_command([](CLI::App& root) {
@@ -26,13 +26,17 @@ const bool kRegistered = register_command([](CLI::App& root) {
       "diagnostics; several runs are compared on one page");
   cmd->add_option("runs", args->runs, "Run folders (slamkit run or track)")->required();
   cmd->add_option("--out", args->out, "The page to write (.html)")->required();
-  cmd->add_option("--point-budget", args->point_budget,
+  cmd->add_option("--point-budget", args->budgets.point_budget,
                   "Map points in the page at most, shared among the runs (default 300000)")
+      ->check(CLI::Range(0, 50'000'000));
+  cmd->add_option("--mesh-triangle-budget", args->budgets.mesh_triangle_budget,
+                  "Triangles of the runs' mesh.ply in the page at most, shared among them; "
+                  "a mesh with more is simplified (default 300000, 0 = no mesh)")
       ->check(CLI::Range(0, 50'000'000));
   cmd->callback([args] {
     check_output_file("--out", args->out);
     std::vector<std::filesystem::path> runs(args->runs.begin(), args->runs.end());
-    write_report_page(runs, args->out, size_t(args->point_budget));
+    write_report_page(runs, args->out, args->budgets);
   });
 });
 

@@ -148,7 +148,7 @@ void run(const RunArgs& args) {
   // A view of the finished folder, written after run.json says it is complete.
   if (settings.report.enabled)
     write_report_page({args.out}, std::filesystem::path(args.out) / "report.html",
-                      size_t(settings.report.point_budget));
+                      settings.report);
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {

@@ -10,16 +10,21 @@
 namespace slamkit::cli {
 
 void write_report_page(const std::vector<std::filesystem::path>& runs,
-                       const std::filesystem::path& out, size_t point_budget) {
+                       const std::filesystem::path& out, const ReportSettings& budgets) {
   Stopwatch watch;
   eval::ReportOptions options;
-  options.point_budget = point_budget;
+  options.point_budget = size_t(budgets.point_budget);
+  options.mesh_triangle_budget = size_t(budgets.mesh_triangle_budget);
   options.generator = std::string("slamkit ") + kVersion + " (" + kCommit + ")";
   const eval::ReportSummary summary = eval::write_report(runs, out, options);
   for (const std::string& note : summary.notes) std::fprintf(stderr, "report: %s\n", note.c_str());
-  std::printf("report      %s: %.1f MB, %zu of %zu map points, %.2f s\n", out.c_str(),
+  std::string mesh;
+  if (summary.mesh_triangles > 0)
+    mesh = ", " + std::to_string(summary.mesh_triangles_shown) + " of " +
+           std::to_string(summary.mesh_triangles) + " mesh triangles";
+  std::printf("report      %s: %.1f MB, %zu of %zu map points%s, %.2f s\n", out.c_str(),
               double(summary.bytes) / 1e6, summary.map_points_shown, summary.map_points,
-              watch.lap() / 1000);
+              mesh.c_str(), watch.lap() / 1000);
 }
 
 }  // namespace slamkit::cli

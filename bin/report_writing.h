@@ -3,11 +3,14 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/settings/report_settings.h"
+
 namespace slamkit::cli {
 
 // Prints the notes of what the runs lack on stderr ("report: desk: no map.ply: ..."), then one
-// line: the page, its size, the map points shown and the seconds it took.
+// line: the page, its size, the map points (and mesh triangles) shown and the seconds it took.
+// `budgets`: the point and triangle budgets.
 void write_report_page(const std::vector<std::filesystem::path>& runs,
-                       const std::filesystem::path& out, size_t point_budget);
+                       const std::filesystem::path& out, const ReportSettings& budgets);
 
 }  // namespace slamkit::cli

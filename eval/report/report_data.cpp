@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "eval/report/base64.h"
+#include "eval/report/mesh_simplification.h"
 
 namespace slamkit::eval {
 namespace {
@@ -91,12 +92,9 @@ json lost_json(const RunFolder& run) {
   return {{"count", positions.size()}, {"positions", base64_of(flatten(positions))}};
 }
 
-json map_json(const RunFolder& run, const PlyCloud& cloud, size_t budget) {
-  const std::vector<size_t> kept = strided_subset(cloud.points.size(), budget);
-  std::vector<Eigen::Vector3f> points;
-  points.reserve(kept.size());
-  for (size_t i : kept)
-    points.push_back((run.to_groundtruth * cloud.points[i].cast<double>()).cast<float>());
+// Positions quantised to 16 bits over their bounding box ("min", "size", "positions"), as the
+// page decodes them.
+json quantised_positions_json(const std::vector<Eigen::Vector3f>& points) {
   Eigen::Vector3f low = Eigen::Vector3f::Constant(0), high = low;
   if (!points.empty()) {
     low = high = points.front();
@@ -107,17 +105,58 @@ json map_json(const RunFolder& run, const PlyCloud& cloud, size_t budget) {
   }
   const Eigen::Vector3f size = (high - low).cwiseMax(1e-6f);
   std::vector<uint16_t> quantised;
-  std::vector<uint8_t> colours;
   quantised.reserve(3 * points.size());
-  colours.reserve(3 * points.size());
-  for (size_t k = 0; k < kept.size(); ++k) {
+  for (const Eigen::Vector3f& p : points)
     for (int d = 0; d < 3; ++d)
-      quantised.push_back(uint16_t(std::lround((points[k][d] - low[d]) / size[d] * 65535.0f)));
-    for (uint8_t c : cloud.colours[kept[k]]) colours.push_back(c);
+      quantised.push_back(uint16_t(std::lround((p[d] - low[d]) / size[d] * 65535.0f)));
+  return {{"min", {low.x(), low.y(), low.z()}},
+          {"size", {size.x(), size.y(), size.z()}},
+          {"positions", base64_of(quantised)}};
+}
+
+Eigen::Vector3f in_page_frame(const RunFolder& run, const Eigen::Vector3f& point) {
+  return (run.to_groundtruth * point.cast<double>()).cast<float>();
+}
+
+json map_json(const RunFolder& run, const PlyCloud& cloud, size_t budget) {
+  const std::vector<size_t> kept = strided_subset(cloud.points.size(), budget);
+  std::vector<Eigen::Vector3f> points;
+  std::vector<uint8_t> colours;
+  points.reserve(kept.size());
+  colours.reserve(3 * kept.size());
+  for (size_t i : kept) {
+    points.push_back(in_page_frame(run, cloud.points[i]));
+    for (uint8_t c : cloud.colours[i]) colours.push_back(c);
   }
-  return {{"total", cloud.points.size()},       {"count", kept.size()},
-          {"min", {low.x(), low.y(), low.z()}}, {"size", {size.x(), size.y(), size.z()}},
-          {"positions", base64_of(quantised)},  {"colours", base64_of(colours)}};
+  json j = quantised_positions_json(points);
+  j["total"] = cloud.points.size();
+  j["count"] = kept.size();
+  j["colours"] = base64_of(colours);
+  return j;
+}
+
+// The mesh within its share of the triangle budget: vertices as the map's points, triangles as
+// three vertex indices each.
+json mesh_json(const RunFolder& run, const PlyCloud& mesh, size_t budget) {
+  const PlyCloud shown = simplify_mesh(mesh, budget);
+  std::vector<Eigen::Vector3f> points;
+  std::vector<uint8_t> colours;
+  std::vector<uint32_t> indices;
+  points.reserve(shown.points.size());
+  colours.reserve(3 * shown.points.size());
+  indices.reserve(3 * shown.triangles.size());
+  for (size_t i = 0; i < shown.points.size(); ++i) {
+    points.push_back(in_page_frame(run, shown.points[i]));
+    for (uint8_t c : shown.colours[i]) colours.push_back(c);
+  }
+  for (const std::array<uint32_t, 3>& triangle : shown.triangles)
+    for (uint32_t vertex : triangle) indices.push_back(vertex);
+  json j = quantised_positions_json(points);
+  j["total"] = mesh.triangles.size();
+  j["count"] = shown.triangles.size();
+  j["colours"] = base64_of(colours);
+  j["indices"] = base64_of(indices);
+  return j;
 }
 
 // tracking.csv's columns as float32 arrays, with the frame times in seconds from the start.
@@ -141,7 +180,8 @@ json up_json(const RunFolder& run) {
   return {up.x(), up.y(), up.z()};
 }
 
-json run_json(const RunFolder& run, const PlyCloud& map, size_t budget) {
+json run_json(const RunFolder& run, const PlyCloud& map, const PlyCloud& mesh, size_t point_budget,
+              size_t triangle_budget) {
   double t0 = 0;
   if (run.trajectory && !run.trajectory->empty()) t0 = run.trajectory->start_time();
   const auto frame_stamps = run.frames.find("stamp");
@@ -166,8 +206,17 @@ json run_json(const RunFolder& run, const PlyCloud& map, size_t budget) {
   }
   if (run.errors) j["groundtruth"] = {{"positions", base64_of(flatten(run.errors->groundtruth))}};
   if (run.keyframes) j["keyframes"] = keyframes_json(run);
-  if (!map.points.empty()) j["map"] = map_json(run, map, budget);
+  if (!map.points.empty()) j["map"] = map_json(run, map, point_budget);
+  if (!mesh.triangles.empty() && triangle_budget > 0)
+    j["mesh"] = mesh_json(run, mesh, triangle_budget);
   return j;
+}
+
+// `budget` shared evenly among the runs whose cloud has something to show.
+size_t share_of(size_t budget, const std::vector<PlyCloud>& clouds,
+                bool (*shows)(const PlyCloud&)) {
+  const size_t showing = size_t(std::count_if(clouds.begin(), clouds.end(), shows));
+  return showing == 0 ? 0 : budget / showing;
 }
 
 }  // namespace
@@ -182,14 +231,18 @@ std::vector<size_t> strided_subset(size_t total, size_t budget) {
 }
 
 json report_data(const std::vector<RunFolder>& runs, const std::vector<PlyCloud>& maps,
-                 const ReportOptions& options) {
-  const size_t with_maps = size_t(std::count_if(
-      maps.begin(), maps.end(), [](const PlyCloud& map) { return !map.points.empty(); }));
-  const size_t budget = with_maps == 0 ? 0 : options.point_budget / with_maps;
+                 const std::vector<PlyCloud>& meshes, const ReportOptions& options) {
+  const size_t point_share =
+      share_of(options.point_budget, maps, [](const PlyCloud& map) { return !map.points.empty(); });
+  const size_t triangle_share =
+      share_of(options.mesh_triangle_budget, meshes,
+               [](const PlyCloud& mesh) { return !mesh.triangles.empty(); });
   json j = {{"generator", options.generator},
             {"point_budget", options.point_budget},
+            {"mesh_triangle_budget", options.mesh_triangle_budget},
             {"runs", json::array()}};
-  for (size_t i = 0; i < runs.size(); ++i) j["runs"].push_back(run_json(runs[i], maps[i], budget));
+  for (size_t i = 0; i < runs.size(); ++i)
+    j["runs"].push_back(run_json(runs[i], maps[i], meshes[i], point_share, triangle_share));
   return j;
 }
 

@@ -3,7 +3,9 @@
 // settings and stage times (as the run folder holds them), and its geometry as base64 arrays in
 // one frame, the groundtruth's when the run was evaluated (so that several runs of a sequence
 // overlay), else the estimate's own. The map is an evenly strided subset of at most the point
-// budget, its positions quantised to 16 bits over its bounding box (0.1 mm in a 6 m room).
+// budget, its positions quantised to 16 bits over its bounding box (0.1 mm in a 6 m room); the
+// mesh, when a run has one, is simplified to at most the triangle budget
+// (eval/report/mesh_simplification.h), its vertices quantised the same way.
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -21,11 +23,14 @@ std::vector<size_t> strided_subset(size_t total, size_t budget);
 struct ReportOptions {
   // Map points in the page, shared out among the runs' maps.
   size_t point_budget = size_t(ReportSettings{}.point_budget);
+  // Mesh triangles in the page, shared out among the runs' meshes; 0 leaves them out.
+  size_t mesh_triangle_budget = size_t(ReportSettings{}.mesh_triangle_budget);
   std::string generator;  // "slamkit VERSION", shown in the footer
 };
 
-// `maps[i]` is runs[i]'s map.ply read whole (empty when it has none).
+// `maps[i]` and `meshes[i]` are runs[i]'s map.ply and mesh.ply read whole (empty when it has
+// none).
 nlohmann::json report_data(const std::vector<RunFolder>& runs, const std::vector<PlyCloud>& maps,
-                           const ReportOptions& options);
+                           const std::vector<PlyCloud>& meshes, const ReportOptions& options);
 
 }  // namespace slamkit::eval

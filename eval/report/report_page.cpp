@@ -54,19 +54,25 @@ std::string render_report_page(const nlohmann::json& data, const std::string& ti
 ReportSummary write_report(const std::vector<std::filesystem::path>& run_dirs,
                            const std::filesystem::path& out, const ReportOptions& options) {
   std::vector<RunFolder> runs;
-  std::vector<PlyCloud> maps;
+  std::vector<PlyCloud> maps, meshes;
   ReportSummary summary;
   std::string title;
   for (const std::filesystem::path& dir : run_dirs) {
     RunFolder& run = runs.emplace_back(read_run_folder(dir));
     maps.push_back(run.map ? read_ply_cloud(*run.map) : PlyCloud{});
     summary.map_points += maps.back().points.size();
+    // A budget of 0 shows no mesh: the file (tens of MB) is not read.
+    const bool show_mesh = run.mesh && options.mesh_triangle_budget > 0;
+    meshes.push_back(show_mesh ? read_ply_cloud(*run.mesh) : PlyCloud{});
+    summary.mesh_triangles += meshes.back().triangles.size();
     for (const std::string& note : run.notes) summary.notes.push_back(run.name + ": " + note);
     title += (title.empty() ? "" : " vs ") + run.name;
   }
-  const nlohmann::json data = report_data(runs, maps, options);
-  for (const nlohmann::json& run : data["runs"])
+  const nlohmann::json data = report_data(runs, maps, meshes, options);
+  for (const nlohmann::json& run : data["runs"]) {
     if (run.contains("map")) summary.map_points_shown += run["map"]["count"].get<size_t>();
+    if (run.contains("mesh")) summary.mesh_triangles_shown += run["mesh"]["count"].get<size_t>();
+  }
   const std::string page = render_report_page(data, "slamkit report: " + title);
   summary.bytes = page.size();
   write_file_atomically(out, [&](std::ostream& stream) { stream << page; });

@@ -17,8 +17,9 @@ std::string render_report_page(const nlohmann::json& data, const std::string& ti
 
 struct ReportSummary {
   size_t bytes = 0;
-  size_t map_points = 0, map_points_shown = 0;  // over every run's map
-  std::vector<std::string> notes;               // per run: what it lacks ("desk: no map.ply...")
+  size_t map_points = 0, map_points_shown = 0;          // over every run's map
+  size_t mesh_triangles = 0, mesh_triangles_shown = 0;  // over the meshes the page shows
+  std::vector<std::string> notes;  // per run: what it lacks ("desk: no map.ply...")
 };
 
 // Reads the run folders (eval/report/run_folder.h) and writes the page to `out`, atomically.

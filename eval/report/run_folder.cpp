@@ -228,6 +228,8 @@ RunFolder read_run_folder(const fs::path& dir) {
   } else {
     note_missing("map.ply", "no map (`slamkit track` makes none; `run` with map.enabled)");
   }
+  // No note without a mesh: only a TSDF map with map.mesh makes one.
+  if (is_file(dir / "mesh.ply")) run.mesh = dir / "mesh.ply";
   return run;
 }
 

@@ -50,6 +50,7 @@ struct RunFolder {
   std::vector<double> lost_stamps;             // frames tracking.csv marks lost
   std::map<std::string, std::string> figures;  // the evaluator's SVG plots, by file stem
   std::optional<std::filesystem::path> map;    // map.ply when it exists
+  std::optional<std::filesystem::path> mesh;   // mesh.ply when it exists
   std::vector<std::string> notes;              // what is missing or incomplete, and why
 };
 

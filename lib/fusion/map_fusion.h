@@ -1,7 +1,7 @@
 #pragma once
 // The map (docs/method.md#map-fusion): frames fused with their final poses into a TSDF whose
 // surface is the map (or each voxel's centroid of the back-projected points), written as PLY.
-// The only module that includes PCL (in its .cpp files: callers never see PCL types).
+// PCL appears only in this module's .cpp files (marching cubes tables): callers never see it.
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <functional>

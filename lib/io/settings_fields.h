@@ -401,6 +401,8 @@ void visit_fields(ReportSettings& s, V& v) {
   v.field("enabled", s.enabled, from_slamkit("`run` writes report.html (`--no-report` skips it)"));
   v.field("point_budget", s.point_budget, {0, 50'000'000},
           from_slamkit("map points in the page at most, an even subset of map.ply"));
+  v.field("mesh_triangle_budget", s.mesh_triangle_budget, {0, 50'000'000},
+          from_slamkit("mesh.ply's triangles in the page at most, simplified to fit; 0 = none"));
 }
 
 template <class V>

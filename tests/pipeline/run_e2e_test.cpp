@@ -89,7 +89,7 @@ TEST(Run, SyntheticDesk600BackEndBeatsTheFrontEndAndWritesTheMap) {
   EXPECT_EQ(count_lost(r.run), 0);
   EXPECT_LT(r.back_end, r.front_end);
   EXPECT_TRUE(r.run.global_ba_run);
-  // map.ply reads back with PCL's reader, every point finite.
+  // map.ply reads back, every point finite.
   const PlyCloud cloud = read_ply_cloud(out / "map.ply");
   EXPECT_EQ(cloud.points.size(), r.run.fusion.points);
   EXPECT_GT(cloud.points.size(), 10000u);

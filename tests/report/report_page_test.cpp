@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "eval/report/base64.h"
 #include "io/trajectory_io.h"
+#include "report/mesh_fixtures.h"
 #include "support/test_data.h"
 
 namespace slamkit::eval {
@@ -130,6 +131,25 @@ TEST(ReportPage, AMapOfTwoMillionPointsIsCutToTheBudgetAndKeepsItsPositions) {
   }
 }
 
+TEST(ReportPage, AMeshPlyBesideTheMapIsShownWithinTheTriangleBudget) {
+  const fs::path dir = make_run_folder("report_mesh");
+  const PlyCloud sphere = test::sphere_mesh(100, 200, Eigen::Vector3f(0, 0, 1), 0.5f);
+  write_ply_cloud(dir / "mesh.ply", sphere);
+  ReportOptions options;
+  options.mesh_triangle_budget = 10'000;
+  const ReportSummary summary = write_report({dir}, dir / "report.html", options);
+  EXPECT_EQ(summary.mesh_triangles, sphere.triangles.size());
+  EXPECT_LE(summary.mesh_triangles_shown, 10'000u);
+  const json mesh = embedded_data(dir / "report.html")["runs"][0]["mesh"];
+  EXPECT_EQ(mesh["total"], sphere.triangles.size());
+  EXPECT_EQ(mesh["count"], summary.mesh_triangles_shown);
+
+  options.mesh_triangle_budget = 0;  // no mesh in the page, and the file is not read
+  const ReportSummary without = write_report({dir}, dir / "report.html", options);
+  EXPECT_EQ(without.mesh_triangles, 0u);
+  EXPECT_FALSE(embedded_data(dir / "report.html")["runs"][0].contains("mesh"));
+}
+
 TEST(ReportPage, ARunWithoutMapOrGroundtruthGetsTheTrajectoryAndDiagnosticsAndSaysWhatIsMissing) {
   const fs::path dir = make_run_folder("report_plain");
   const ReportSummary summary = write_report({dir}, dir / "report.html", ReportOptions{});
@@ -140,8 +160,10 @@ TEST(ReportPage, ARunWithoutMapOrGroundtruthGetsTheTrajectoryAndDiagnosticsAndSa
   };
   EXPECT_TRUE(says("no map.ply"));
   EXPECT_TRUE(says("no metrics.json"));
+  EXPECT_FALSE(says("mesh.ply"));  // few runs make one: its absence is no news
   const json run = embedded_data(dir / "report.html")["runs"][0];
   EXPECT_FALSE(run.contains("map"));
+  EXPECT_FALSE(run.contains("mesh"));
   EXPECT_FALSE(run.contains("groundtruth"));
   EXPECT_EQ(run["frame"], "estimate");
   EXPECT_EQ(run["trajectory"]["count"], 19);  // the lost frame is not in trajectory.txt

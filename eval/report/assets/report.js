@@ -63,7 +63,7 @@ for (const run of runs) {
 const canvas = document.getElementById('view3d');
 // No multisampling, and every line and point drawn with vertex colours: a software WebGL (a
 // headless browser, a machine without a GPU) spends most of the first frame compiling shader
-// programs, and these choices leave two.
+// programs, and these choices leave two (three with a mesh).
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: false });
 renderer.setPixelRatio(window.devicePixelRatio || 1);
 renderer.setClearColor(0x15181e);
@@ -110,18 +110,37 @@ function addLayer(run, name, object, swatch, visible) {
   layers.push({ run, name, object, swatch });
 }
 
-function mapLayer(map) {
+// Vertices quantised to 16 bits over a box (the map's and the mesh's), with their colours.
+function quantisedGeometry(cloud) {
   const geometry = new THREE.BufferGeometry();
-  const positions = new Uint16Array(bytesOf(map.positions));
-  geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3, true));
-  geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(bytesOf(map.colours)), 3, true));
-  const points = new THREE.Points(geometry, pointsMaterial({ size: 2 }));
-  // Positions are quantised over the map's box: scale and offset put them back in metres.
-  points.scale.set(map.size[0], map.size[1], map.size[2]);
-  points.position.set(map.min[0], map.min[1], map.min[2]);
-  bounds.expandByPoint(new THREE.Vector3(...map.min));
-  bounds.expandByPoint(new THREE.Vector3(map.min[0] + map.size[0], map.min[1] + map.size[1], map.min[2] + map.size[2]));
-  return points;
+  geometry.setAttribute('position', new THREE.BufferAttribute(new Uint16Array(bytesOf(cloud.positions)), 3, true));
+  geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(bytesOf(cloud.colours)), 3, true));
+  return geometry;
+}
+
+// Scale and offset put quantised positions back in metres.
+function placeInBox(object, cloud) {
+  object.scale.set(cloud.size[0], cloud.size[1], cloud.size[2]);
+  object.position.set(cloud.min[0], cloud.min[1], cloud.min[2]);
+  bounds.expandByPoint(new THREE.Vector3(...cloud.min));
+  bounds.expandByPoint(new THREE.Vector3(cloud.min[0] + cloud.size[0], cloud.min[1] + cloud.size[1], cloud.min[2] + cloud.size[2]));
+  return object;
+}
+
+function mapLayer(map) {
+  return placeInBox(new THREE.Points(quantisedGeometry(map), pointsMaterial({ size: 2 })), map);
+}
+
+// The mesh lit (see the lights below) so that its shape reads in its own colours. Only front
+// faces are drawn: seen from outside, a room's ceiling and near walls show their backs and
+// vanish, so the view looks in.
+function meshLayer(mesh) {
+  const geometry = quantisedGeometry(mesh);
+  geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(bytesOf(mesh.indices)), 1));
+  // From the quantised positions: the object's scale turns the normals with them.
+  geometry.computeVertexNormals();
+  const material = new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors });
+  return placeInBox(new THREE.Mesh(geometry, material), mesh);
 }
 
 function trajectoryLayer(trajectory, runColour) {
@@ -183,7 +202,10 @@ function loopsLayer(loops) {
 
 runs.forEach((run, r) => {
   const colour = runColours[r % runColours.length];
-  if (run.map) addLayer(run, `map (${run.map.count.toLocaleString()} points)`, mapLayer(run.map), null, r === 0);
+  // A mesh shows the surface better than the points, which would only speckle it: the first
+  // run's mesh is shown, its points hidden.
+  if (run.map) addLayer(run, `map (${run.map.count.toLocaleString()} points)`, mapLayer(run.map), null, r === 0 && !run.mesh);
+  if (run.mesh) addLayer(run, `mesh (${run.mesh.count.toLocaleString()} triangles)`, meshLayer(run.mesh), null, r === 0);
   if (run.groundtruth) {
     const geometry = lineGeometry(float32(run.groundtruth.positions), 0xbfc5cf);
     addLayer(run, 'groundtruth (aligned)', new THREE.Line(geometry, lineMaterial), '#bfc5cf', r === 0);
@@ -213,6 +235,16 @@ runs.forEach((run, r) => {
 });
 
 const up = runs.length > 0 ? runs[0].up : [0, 0, 1];
+if (runs.some((run) => run.mesh)) {
+  // The meshes' lights (points and lines ignore them): a sky light from above, so that floors
+  // and walls differ, and a light at the eye, so that every face turned to the view is lit.
+  const sky = new THREE.HemisphereLight(0xffffff, 0x505560, 0.6);
+  sky.position.set(up[0], up[1], up[2]);
+  scene.add(sky);
+  camera.add(new THREE.PointLight(0xffffff, 0.5));
+  scene.add(camera);
+}
+
 function resetView() {
   camera.up.set(up[0], up[1], up[2]);
   // From above and to one side of the scene, looking at its centre.
@@ -275,11 +307,17 @@ document.getElementById('point-size').addEventListener('input', (event) => {
   render();
 });
 const budget = document.getElementById('map-budget');
-const mapped = runs.filter((run) => run.map);
+const mapped = runs.filter((run) => run.map || run.mesh);
+const meshed = runs.some((run) => run.mesh);
+const shownOf = (run) => [
+  run.map && `${run.map.count.toLocaleString()} of ${run.map.total.toLocaleString()} map points`,
+  run.mesh && `${run.mesh.count.toLocaleString()} of ${run.mesh.total.toLocaleString()} mesh triangles`,
+].filter(Boolean).join(' and ');
 budget.className = 'muted';
 budget.textContent = mapped.length === 0 ? 'No map in this run.' :
-  mapped.map((run) => `${run.name}: ${run.map.count.toLocaleString()} of ${run.map.total.toLocaleString()} map points shown`).join('; ') +
-  ` (budget ${data.point_budget.toLocaleString()}).`;
+  mapped.map((run) => `${run.name}: ${shownOf(run)} shown`).join('; ') +
+  (meshed ? ` (budgets ${data.point_budget.toLocaleString()} points, ${data.mesh_triangle_budget.toLocaleString()} triangles).` :
+    ` (budget ${data.point_budget.toLocaleString()}).`);
 
 function drawColourBar() {
   const bar = document.getElementById('colour-bar');
