@@ -254,6 +254,37 @@ TEST(MapFusion, EachVoxelIsTheMeanOfAllItsPointsWhateverTheBatches) {
   }
 }
 
+TEST(FuseCommand, FusesTheFramesWithAPoseAsTheLibraryDoesAndRefusesATrajectoryWithoutOne) {
+  const fs::path dir = test::temp_dir("fuse_command");
+  const fs::path groundtruth = rendered_sequence() / "groundtruth.txt";
+  std::string output;
+  ASSERT_EQ(test::run_slamkit("fuse " + rendered_sequence().string() + " --trajectory " +
+                                  groundtruth.string() + " --frame-step 2 --mesh --out " +
+                                  (dir / "cli").string(),
+                              &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("fused map   12 frames"), std::string::npos) << output;
+  // The same frames (every 2nd, each with its exact pose) through the library.
+  FusionSettings settings;
+  settings.mesh = true;
+  const FusionReport report = fuse_map(sequence(), groundtruth_frames(sequence(), 2), settings,
+                                       dir / "map.ply", dir / "mesh.ply");
+  EXPECT_GT(report.triangles, 0u);
+  EXPECT_TRUE(file_bytes(dir / "cli" / "map.ply") == file_bytes(dir / "map.ply"));
+  EXPECT_TRUE(file_bytes(dir / "cli" / "mesh.ply") == file_bytes(dir / "mesh.ply"));
+
+  // A trajectory that has no pose near any frame: exit 2, naming it.
+  const fs::path far = dir / "far.txt";
+  std::ofstream(far) << "1 0 0 0 0 0 0 1\n";
+  EXPECT_EQ(test::run_slamkit("fuse " + rendered_sequence().string() + " --trajectory " +
+                                  far.string() + " --out " + (dir / "none").string(),
+                              &output),
+            2);
+  EXPECT_NE(output.find(far.string()), std::string::npos) << output;
+  EXPECT_NE(output.find("no pose within"), std::string::npos) << output;
+}
+
 TEST(MapFusion, BadInputIsAnInputErrorNamingTheFile) {
   const fs::path dir = test::temp_dir("bad_input");
   const FusionSettings settings;
