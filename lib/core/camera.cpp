@@ -44,7 +44,7 @@ namespace {
 // readout time; 30 ms (about a frame period at 30 Hz) is the kinect sensor model's assumption
 // (docs/sensor.md), and Kerl et al. (ICCV 2015) simulate such a camera with 28 ms. With frame
 // refinement every value from 20 to 33 ms lowers the ATE of fr1/desk and of fr2/desk at both
-// depth scales; fr2/desk's at 5208 by a quarter or more (docs/experiments.md).
+// depth scales; fr2/desk's at 5208 by a quarter or more (docs/measurement-log/experiments.md).
 constexpr double kKinectReadoutTime = 0.030;
 
 }  // namespace

@@ -28,7 +28,7 @@ struct Camera {
   double readout_time = 0.0;
   // depth.txt's stamps are the instants the depth images were taken (a clock the recording
   // trusts). TUM's are not taken as such: reading the TUM pieces' depth at its stamps made them
-  // worse (docs/experiments.md, exposure timing).
+  // worse (docs/measurement-log/experiments.md, exposure timing).
   bool exact_depth_stamps = false;
 
   // Pinhole projection of a camera-frame point (no distortion: keypoints are undistorted).

@@ -6,7 +6,7 @@
 // Open3D do), a block per thread: a voxel's value depends only on the frames and their order,
 // so the field is the same at any thread count.
 // Written by hand: PCL has no CPU TSDF, and Open3D's (Debian's libopen3d-dev) took 10 s for 200
-// frames where this takes a tenth of that (docs/experiments.md).
+// frames where this takes a tenth of that (docs/measurement-log/experiments.md).
 #include <Eigen/Geometry>
 #include <array>
 #include <cstdint>

@@ -42,7 +42,7 @@ RunResult run_batch(const TumSequence& sequence, const Settings& settings,
   result.cpu_seconds.track = total_cpu.lap() / 1000.0;
   // Hands the memory tracking freed back to the system: glibc keeps it in the threads' arenas,
   // and the fusion peak came on top of it (desk 600: 834 -> 527 MB, outputs identical;
-  // docs/experiments.md).
+  // docs/measurement-log/experiments.md).
   malloc_trim(0);
   StageTimes& t = result.seconds;
   StageTimes& cpu = result.cpu_seconds;

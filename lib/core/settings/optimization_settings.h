@@ -35,8 +35,8 @@ struct LocalBaSettings {
   // (slamkit) The best covisible neighbours that move with the keyframe; 0 = all of them, as
   // ORB-SLAM2, which keeps the window small by culling redundant keyframes (we keep every
   // keyframe: in a room the window then grows to most of the map). 5 cost 11 % less CPU on
-  // desk 600 than 10, every preset's mean ATE within its seeds' scatter (docs/experiments.md,
-  // 2026-12-05).
+  // desk 600 than 10, every preset's mean ATE within its seeds' scatter
+  // (docs/measurement-log/experiments.md, 2026-12-05).
   int max_covisible_keyframes = 5;
   // (slamkit) Of the other keyframes observing the window's points (held fixed), those sharing
   // the most points with it; 0 = all (ORB-SLAM2). In a room most of the map sees the window's
