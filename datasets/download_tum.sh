@@ -237,7 +237,7 @@ fetch_trajectory() {
   say "$evo_url/$name"
   fetch "$evo_url/$name" "$work"
   problem=$(matches_sums "$dir/.cutting" "trajectories/$path") ||
-    fail "$evo_url/$name is not the file the tests use: $problem"
+    { rm -f "$work"; fail "$evo_url/$name is not the file the tests use: $problem"; }
   mv "$work" "$dir/trajectories/$path"
 }
 
