@@ -12,7 +12,7 @@
 #include "bin/sequence_options.h"
 #include "eval/ate.h"
 #include "eval/run/run_evaluation.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "loop/vocabulary_file.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"

@@ -17,7 +17,7 @@
 #include "eval/metrics_json.h"
 #include "eval/regression/baseline.h"
 #include "eval/regression/process.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 
 namespace slamkit::regress {
 namespace {
