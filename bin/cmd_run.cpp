@@ -10,7 +10,7 @@
 #include "bin/report_writing.h"
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
-#include "eval/ate.h"
+#include "eval/metrics/ate.h"
 #include "eval/run/run_evaluation.h"
 #include "settings/settings_yaml.h"
 #include "loop/vocabulary_file.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/rpe.h"
+#include "eval/metrics/rpe.h"
 
 namespace slamkit::eval {
 

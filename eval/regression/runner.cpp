@@ -13,8 +13,8 @@
 #include <thread>
 
 #include "core/error.h"
-#include "eval/checksum.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/checksum.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/regression/baseline.h"
 #include "eval/regression/process.h"
 #include "settings/settings_yaml.h"
