@@ -9,20 +9,9 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 script="${1:-$here/../../datasets/download_tum.sh}"
 python="${SLAMKIT_PYTHON:-/usr/bin/python3}"
-work="$(mktemp -d "${TMPDIR:-/tmp}/slamkit_download_test.XXXXXX")"
-servers=()
-cleanup() {
-  for pid in "${servers[@]}"; do kill "$pid" 2>/dev/null || true; done
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-failures=0
-check() {  # check "what" command...
-  local what="$1"
-  shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
-}
+# shellcheck source=tests/download/loopback_harness.sh
+source "$here/loopback_harness.sh"
+new_work_dir slamkit_download_test
 
 # A sequence in the TUM layout: 3 RGB and 3 depth PNGs (with PNG signatures and random bytes,
 # so the archive is ~300 kB and does not compress), the lists and a groundtruth.
@@ -42,19 +31,6 @@ make_sequence() {
   done
   tar -czf "$1/freiburg${2:8:1}/rgbd_dataset_$2.tgz" -C "$1" "rgbd_dataset_$2"
   rm -rf "$dir"
-}
-
-# Starts range_server.py on ROOT; sets `url` and `log`.
-start_range_server() {
-  local root="$1" drop="$2"
-  log="$work/requests_$RANDOM.log"
-  : > "$log"
-  "$python" "$here/range_server.py" --root "$root" --port-file "$work/port" --log "$log" \
-    --drop-after "$drop" &
-  servers+=($!)
-  for _ in $(seq 100); do [[ -s "$work/port" ]] && break; sleep 0.1; done
-  url="http://127.0.0.1:$(cat "$work/port")"
-  rm -f "$work/port"
 }
 
 run() {  # run DEST NAME...: the script's output in $out, its exit code in $code

@@ -42,20 +42,9 @@ if [[ -n "$missing" ]]; then
   exit 77
 fi
 
-work="$(mktemp -d "${TMPDIR:-/tmp}/slamkit_pieces_test.XXXXXX")"
-servers=()
-cleanup() {
-  for pid in "${servers[@]}"; do kill "$pid" 2>/dev/null || true; done
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-failures=0
-check() {  # check "what" command...
-  local what="$1"
-  shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; failures=$((failures + 1)); fi
-}
+# shellcheck source=tests/download/loopback_harness.sh
+source "$here/loopback_harness.sh"
+new_work_dir slamkit_pieces_test
 
 # A made-up frame: a PNG signature and a line naming it (the script never decodes frames).
 made_up_png() { printf '\x89PNG\r\n\x1a\nmade-up frame %s\n' "$2" > "$1"; }
@@ -122,19 +111,6 @@ pack() {
   local build="$1" served="$2" name="$3"
   mkdir -p "$served/${name%%_*}"
   tar -C "$build" -cf - "rgbd_dataset_$name" | gzip -1 > "$served/${name%%_*}/rgbd_dataset_$name.tgz"
-}
-
-# Starts range_server.py on ROOT; sets `url` and `log`.
-start_range_server() {
-  local root="$1"
-  log="$work/requests.log"
-  : > "$log"
-  "$python" "$here/range_server.py" --root "$root" --port-file "$work/port" --log "$log" &
-  servers+=($!)
-  for _ in $(seq 100); do [[ -s "$work/port" ]] && break; sleep 0.1; done
-  [[ -s "$work/port" ]] || { echo "FAIL the loopback server did not start" >&2; exit 1; }
-  url="http://127.0.0.1:$(cat "$work/port")"
-  rm -f "$work/port"
 }
 
 run() {  # run ARGS...: the script's output in $out, its exit code in $code
