@@ -72,13 +72,13 @@ json coverage_json(const Coverage& c) {
 json input_json(const std::filesystem::path& path, const TrajectoryFile& file) {
   const Trajectory& t = file.trajectory;
   json j = {{"poses", t.size()},
-          {"start", t.start_time()},
-          {"end", t.end_time()},
-          {"zero_quaternions_skipped", file.zero_quaternions_skipped},
-          {"non_finite_lines_skipped", file.non_finite_lines_skipped},
-          {"duplicate_stamps_dropped", file.duplicate_stamps_dropped},
-          {"was_unsorted", file.was_unsorted},
-          {"warnings", file.warnings}};
+            {"start", t.start_time()},
+            {"end", t.end_time()},
+            {"zero_quaternions_skipped", file.zero_quaternions_skipped},
+            {"non_finite_lines_skipped", file.non_finite_lines_skipped},
+            {"duplicate_stamps_dropped", file.duplicate_stamps_dropped},
+            {"was_unsorted", file.was_unsorted},
+            {"warnings", file.warnings}};
   if (!path.empty()) {
     j["path"] = path.string();
     j["fnv1a64"] = fnv1a64_file(path);

@@ -23,7 +23,8 @@ nlohmann::json ate_json(const AteResult& ate);
 std::string rotation_withheld_reason(const Alignment& a);
 nlohmann::json rpe_json(const RpeResult& rpe, const RpeOptions& options);
 nlohmann::json coverage_json(const Coverage& c);
-// path and fnv1a64 checksum (left out when `path` is empty: a trajectory given in memory), poses, start, end, skipped-line counts and warnings.
+// path and fnv1a64 checksum (left out when `path` is empty: a trajectory given in memory),
+// poses, start, end, skipped-line counts and warnings.
 nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFile& file);
 
 // Merges `update` into the JSON file at `path` (created if missing): "ate" and "rpe" are

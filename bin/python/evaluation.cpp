@@ -26,8 +26,9 @@ enum Options { kCommon = 1, kAte = 2, kRpe = 4 };
 
 double non_negative(const py::handle& value, const char* option) {
   const double v = value.cast<double>();
-  if (!(v >= 0)) throw std::invalid_argument(std::string(option) + ": " + std::to_string(v) +
-                                             " is not a non-negative number");
+  if (!(v >= 0))
+    throw std::invalid_argument(std::string(option) + ": " + std::to_string(v) +
+                                " is not a non-negative number");
   return v;
 }
 
@@ -56,13 +57,28 @@ struct Option {
 // Every keyword option, with the CLI option it stands for and the same checks.
 const std::map<std::string, Option>& option_table() {
   static const std::map<std::string, Option> table = {
-      {"convention", {kCommon, [](auto& a, auto v) { a.convention = member(v, "convention", {"tum", "evo"}); }}},
+      {"convention",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.convention = member(v, "convention", {"tum", "evo"});
+        }}},
       {"max_diff", {kCommon, [](auto& a, auto v) { a.max_diff = non_negative(v, "max_diff"); }}},
       {"offset", {kCommon, [](auto& a, auto v) { a.offset = v.template cast<double>(); }}},
-      {"association", {kCommon, [](auto& a, auto v) { a.association = member(v, "association", {"tum", "evo"}); }}},
+      {"association",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.association = member(v, "association", {"tum", "evo"});
+        }}},
       {"duplicate_stamps",
-       {kCommon, [](auto& a, auto v) { a.duplicates = member(v, "duplicate_stamps", {"last", "first"}); }}},
-      {"time_unit", {kCommon, [](auto& a, auto v) { a.time_unit = member(v, "time_unit", {"s", "us", "ns"}); }}},
+       {kCommon,
+        [](auto& a, auto v) {
+          a.duplicates = member(v, "duplicate_stamps", {"last", "first"});
+        }}},
+      {"time_unit",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.time_unit = member(v, "time_unit", {"s", "us", "ns"});
+        }}},
       {"out", {kCommon, [](auto& a, auto v) { a.out_dir = text(v); }}},
       {"json", {kCommon, [](auto& a, auto v) { a.json_path = text(v); }}},
       {"plot", {kCommon, [](auto& a, auto v) { a.plot_dir = text(v); }}},
@@ -71,23 +87,36 @@ const std::map<std::string, Option>& option_table() {
       {"title", {kCommon, [](auto& a, auto v) { a.title = text(v); }}},
       {"system_name", {kCommon, [](auto& a, auto v) { a.system_name = text(v); }}},
       {"quiet", {kCommon, [](auto& a, auto v) { a.quiet = v.template cast<bool>(); }}},
-      {"align", {kAte | kRpe, [](auto& a, auto v) {
-                   a.align = member(v, "align", {"se3", "sim3", "translation", "none"}); }}},
+      {"align",
+       {kAte | kRpe,
+        [](auto& a, auto v) {
+          a.align = member(v, "align", {"se3", "sim3", "translation", "none"});
+        }}},
       {"align_first", {kAte, [](auto& a, auto v) { a.align_first = v.template cast<size_t>(); }}},
       {"aligned", {kAte, [](auto& a, auto v) { a.aligned_path = text(v); }}},
-      {"planes", {kAte, [](auto& a, auto v) {
-                    a.planes = text(v);
-                    for (const std::string& plane : eval::split_planes(a.planes))
-                      if (plane != "xy" && plane != "xz" && plane != "yz")
-                        throw std::invalid_argument("planes: unknown plane '" + plane +
-                                                    "' (use xy, xz or yz)");
-                  }}},
+      {"planes",
+       {kAte,
+        [](auto& a, auto v) {
+          a.planes = text(v);
+          for (const std::string& plane : eval::split_planes(a.planes))
+            if (plane != "xy" && plane != "xz" && plane != "yz")
+              throw std::invalid_argument("planes: unknown plane '" + plane +
+                                          "' (use xy, xz or yz)");
+        }}},
       {"delta", {kRpe, [](auto& a, auto v) { a.rpe.delta = v.template cast<double>(); }}},
-      {"unit", {kRpe, [](auto& a, auto v) { a.unit = member(v, "unit", {"s", "f", "m", "deg"}); }}},
+      {"unit",
+       {kRpe,
+        [](auto& a, auto v) {
+          a.unit = member(v, "unit", {"s", "f", "m", "deg"});
+        }}},
       {"all_pairs", {kRpe, [](auto& a, auto v) { a.rpe.all_pairs = v.template cast<bool>(); }}},
       {"rpe_convention",
-       {kRpe, [](auto& a, auto v) { a.rpe_convention = member(v, "rpe_convention", {"tum", "evo"}); }}},
-      {"delta_tol", {kRpe, [](auto& a, auto v) { a.rpe.rel_delta_tol = non_negative(v, "delta_tol"); }}},
+       {kRpe,
+        [](auto& a, auto v) {
+          a.rpe_convention = member(v, "rpe_convention", {"tum", "evo"});
+        }}},
+      {"delta_tol",
+       {kRpe, [](auto& a, auto v) { a.rpe.rel_delta_tol = non_negative(v, "delta_tol"); }}},
   };
   return table;
 }
@@ -107,7 +136,7 @@ void set_input(const py::handle& given, const char* name, std::string& label,
 EvaluationRequest make_request(const py::handle& gt, const py::handle& est, const py::kwargs& kw,
                                int groups, const char* function) {
   EvaluationRequest a;
-  a.quiet = true;  // a library prints nothing unless asked (quiet=False)
+  a.quiet = true;                        // a library prints nothing unless asked (quiet=False)
   if (groups == kRpe) a.align = "none";  // `eval rpe`'s default
   set_input(gt, "groundtruth", a.gt, a.gt_data);
   set_input(est, "estimate", a.est, a.est_data);
@@ -137,7 +166,8 @@ Array vector_array(const std::vector<double>& v) {
 
 Array points_array(const std::vector<Eigen::Vector3d>& v) {
   Array a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
-  for (size_t i = 0; i < v.size(); ++i) Eigen::Map<Eigen::Vector3d>(a.mutable_data() + 3 * i) = v[i];
+  for (size_t i = 0; i < v.size(); ++i)
+    Eigen::Map<Eigen::Vector3d>(a.mutable_data() + 3 * i) = v[i];
   return a;
 }
 
@@ -181,8 +211,7 @@ eval::EvaluationResult evaluate(EvaluationRequest& a, bool do_ate, bool do_rpe) 
 
 py::object evaluation_object(const eval::EvaluationResult& r) {
   return py::module_::import("types").attr("SimpleNamespace")(
-      "metrics"_a = json_to_python(r.metrics),
-      "ate"_a = r.ate ? ate_arrays(*r.ate) : py::none(),
+      "metrics"_a = json_to_python(r.metrics), "ate"_a = r.ate ? ate_arrays(*r.ate) : py::none(),
       "rpe"_a = r.rpe ? rpe_arrays(*r.rpe) : py::none());
 }
 

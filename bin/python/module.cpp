@@ -6,7 +6,9 @@
 #include "core/error.h"
 
 PYBIND11_MODULE(slamkit, m) {
-  m.doc() = "slamkit: trajectories, their evaluation (ATE, RPE) and RGB-D sequences, as the slamkit CLI has them";
+  m.doc() =
+      "slamkit: trajectories, their evaluation (ATE, RPE) and RGB-D sequences, as the slamkit CLI "
+      "has them";
   pybind11::register_exception<slamkit::InputError>(m, "InputError", PyExc_ValueError);
   slamkit::python::bind_trajectory(m);
   slamkit::python::bind_evaluation(m);

@@ -56,9 +56,8 @@ py::dict camera_dict(const Camera& c) {
   return py::dict("name"_a = c.name, "fx"_a = c.fx, "fy"_a = c.fy, "cx"_a = c.cx, "cy"_a = c.cy,
                   "width"_a = c.width, "height"_a = c.height, "depth_scale"_a = c.depth_scale,
                   "min_depth"_a = c.min_depth, "max_depth"_a = c.max_depth,
-                  "distortion"_a = py::make_tuple(c.distortion.k1, c.distortion.k2,
-                                                  c.distortion.p1, c.distortion.p2,
-                                                  c.distortion.k3),
+                  "distortion"_a = py::make_tuple(c.distortion.k1, c.distortion.k2, c.distortion.p1,
+                                                  c.distortion.p2, c.distortion.k3),
                   "readout_time"_a = c.readout_time);
 }
 
@@ -101,8 +100,7 @@ void bind_sequence(py::module_& m) {
              return TumSequence::open(folder, options);
            }),
            "folder"_a, py::kw_only(), "max_time_diff"_a = 0.02, "time_offset"_a = 0.0,
-           "association"_a = py::none(), "calibration"_a = py::none(),
-           "depth_scale"_a = py::none(),
+           "association"_a = py::none(), "calibration"_a = py::none(), "depth_scale"_a = py::none(),
            "Opens a folder; options as `slamkit run`'s --max-time-diff, --time-offset, "
            "--association, --calibration, --depth-scale. ValueError naming file and line.")
       .def("__len__", &TumSequence::size)
@@ -111,16 +109,17 @@ void bind_sequence(py::module_& m) {
            "float32 metres (0 where invalid)")
       .def("__iter__",
            [](const py::object& self) {
-             return py::module_::import("builtins").attr("map")(
-                 self.attr("__getitem__"),
-                 py::module_::import("builtins").attr("range")(py::len(self)));
+             return py::module_::import("builtins")
+                 .attr("map")(self.attr("__getitem__"),
+                              py::module_::import("builtins").attr("range")(py::len(self)));
            })
       .def_property_readonly("folder", &TumSequence::folder)
       .def_property_readonly("stamps",
                              [](const TumSequence& s) {
                                std::vector<double> stamps(s.size());
                                for (size_t i = 0; i < s.size(); ++i) stamps[i] = s.stamp(i);
-                               return py::array_t<double>(py::ssize_t(stamps.size()), stamps.data());
+                               return py::array_t<double>(py::ssize_t(stamps.size()),
+                                                          stamps.data());
                              })
       .def_property_readonly("camera", [](const TumSequence& s) { return camera_dict(s.camera()); })
       .def_property_readonly("groundtruth", [](const TumSequence& s) -> py::object {
@@ -156,8 +155,8 @@ void bind_sequence(py::module_& m) {
         return TumSequence::open(out);
       },
       "preset"_a = "desk", "frames"_a = 600, "seed"_a = 1, "sensor"_a = "ideal", py::kw_only(),
-      "out"_a, "threads"_a = 0, "sensor_settings"_a = "", "sensor_off"_a = "",
-      "sensor_on"_a = "", "progress"_a = py::none(),
+      "out"_a, "threads"_a = 0, "sensor_settings"_a = "", "sensor_off"_a = "", "sensor_on"_a = "",
+      "progress"_a = py::none(),
       "`slamkit synth`: renders a synthetic sequence into `out` (the same files, byte for byte) "
       "and opens it. progress(frames_done) is called now and then; an exception it raises, or "
       "Ctrl-C, is raised when rendering has ended.");

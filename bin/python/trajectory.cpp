@@ -31,22 +31,23 @@ void bind_trajectory(py::module_& m) {
            "quaternions=) with quaternions (N, 4) as qx qy qz qw (TUM's order). Sorted by stamp; "
            "quaternions normalised; a repeated stamp raises ValueError.")
       .def("__len__", [](const TrajectoryFile& f) { return f.trajectory.size(); })
-      .def_property_readonly("stamps", [](const TrajectoryFile& f) { return stamps_array(f.trajectory); })
-      .def_property_readonly("poses", [](const TrajectoryFile& f) { return poses_array(f.trajectory); },
-                             "(N, 4, 4) T_w_c")
+      .def_property_readonly("stamps",
+                             [](const TrajectoryFile& f) { return stamps_array(f.trajectory); })
+      .def_property_readonly(
+          "poses", [](const TrajectoryFile& f) { return poses_array(f.trajectory); },
+          "(N, 4, 4) T_w_c")
       .def_property_readonly("positions",
                              [](const TrajectoryFile& f) { return positions_array(f.trajectory); })
-      .def_property_readonly("quaternions",
-                             [](const TrajectoryFile& f) { return quaternions_array(f.trajectory); },
-                             "(N, 4) qx qy qz qw")
+      .def_property_readonly(
+          "quaternions", [](const TrajectoryFile& f) { return quaternions_array(f.trajectory); },
+          "(N, 4) qx qy qz qw")
       .def_readonly("warnings", &TrajectoryFile::warnings,
                     "What the reader skipped or changed, one line each (naming file and line)")
       .def_readonly("was_unsorted", &TrajectoryFile::was_unsorted)
       .def(
           "write",
-          [](const TrajectoryFile& f, const std::filesystem::path& path, const std::string& comment) {
-            write_tum_trajectory(path, f.trajectory, comment);
-          },
+          [](const TrajectoryFile& f, const std::filesystem::path& path,
+             const std::string& comment) { write_tum_trajectory(path, f.trajectory, comment); },
           "path"_a, "comment"_a = "",
           "Writes a TUM file as slamkit does (every number in its shortest exact form), with "
           "'# comment' first when given.")

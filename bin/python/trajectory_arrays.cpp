@@ -115,14 +115,17 @@ std::shared_ptr<TrajectoryFile> trajectory_from_poses(const Array& stamps, const
   std::vector<Eigen::Vector3d> p(static_cast<size_t>(n));
   std::vector<Eigen::Quaterniond> q(static_cast<size_t>(n));
   for (py::ssize_t i = 0; i < n; ++i) {
-    const Eigen::Matrix4d T = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m + 16 * i);
+    const Eigen::Matrix4d T =
+        Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m + 16 * i);
     const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
     // Rigid to the precision of a 4x4 printed with 9 digits; anything else is not a pose.
-    const bool rigid = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
-                       R.determinant() > 0 && T.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1));
+    const bool rigid =
+        (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
+        R.determinant() > 0 && T.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1));
     if (!rigid)
       fail("poses[" + std::to_string(i) +
-           "] is not a rigid transform (an orthonormal rotation with determinant 1 and last row 0 0 0 1)");
+           "] is not a rigid transform (an orthonormal rotation with determinant 1 and last row 0 "
+           "0 0 1)");
     p[i] = T.topRightCorner<3, 1>();
     q[i] = Eigen::Quaterniond(R).normalized();
   }
@@ -146,8 +149,7 @@ Array poses_array(const Trajectory& t) {
 Array positions_array(const Trajectory& t) {
   Array a({static_cast<py::ssize_t>(t.size()), py::ssize_t{3}});
   double* out = a.mutable_data();
-  for (size_t i = 0; i < t.size(); ++i)
-    Eigen::Map<Eigen::Vector3d>(out + 3 * i) = t.position(i);
+  for (size_t i = 0; i < t.size(); ++i) Eigen::Map<Eigen::Vector3d>(out + 3 * i) = t.position(i);
   return a;
 }
 

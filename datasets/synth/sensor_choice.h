@@ -9,8 +9,8 @@
 namespace slamkit::synth {
 
 struct SensorChoice {
-  std::string sensor = "ideal";  // ideal or kinect
-  std::string settings_file;     // YAML of kinect settings (synthetic.yaml's `kinect:` map)
+  std::string sensor = "ideal";         // ideal or kinect
+  std::string settings_file;            // YAML of kinect settings (synthetic.yaml's `kinect:` map)
   std::string effects_off, effects_on;  // comma-separated effect names
 };
 
