@@ -7,5 +7,6 @@ namespace slamkit::python {
 void bind_trajectory(pybind11::module_& m);  // trajectory.cpp
 void bind_evaluation(pybind11::module_& m);  // evaluation.cpp
 void bind_sequence(pybind11::module_& m);    // sequence.cpp
+void bind_settings(pybind11::module_& m);    // settings.cpp
 
 }  // namespace slamkit::python

@@ -13,4 +13,5 @@ PYBIND11_MODULE(slamkit, m) {
   slamkit::python::bind_trajectory(m);
   slamkit::python::bind_evaluation(m);
   slamkit::python::bind_sequence(m);
+  slamkit::python::bind_settings(m);
 }
