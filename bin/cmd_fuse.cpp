@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "core/settings/settings.h"
 #include "fusion/map_fusion.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::cli {

@@ -7,7 +7,7 @@
 
 #include "bin/command.h"
 #include "core/error.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/run/map_evaluation.h"
 
 namespace slamkit::cli {

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "bin/command.h"
-#include "io/settings_reference.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_reference.h"
+#include "settings/settings_yaml.h"
 
 namespace slamkit::cli {
 namespace {

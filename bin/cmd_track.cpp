@@ -10,7 +10,7 @@
 #include "bin/run_summary.h"
 #include "bin/sequence_options.h"
 #include "eval/run/run_evaluation.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 

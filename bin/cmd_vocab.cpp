@@ -12,7 +12,7 @@
 #include "bin/output_folder.h"
 #include "bin/sequence_options.h"
 #include "core/stopwatch.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "loop/training_descriptors.h"
 #include "loop/vocabulary_file.h"
 #include "loop/vocabulary_training.h"

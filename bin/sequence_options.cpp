@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "io/settings_fields.h"
+#include "settings/settings_fields.h"
 
 namespace slamkit::cli {
 

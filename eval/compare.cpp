@@ -6,7 +6,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {

@@ -11,15 +11,15 @@
 #include <vector>
 
 #include "core/error.h"
-#include "eval/association.h"
-#include "eval/ate.h"
+#include "eval/metrics/association.h"
+#include "eval/metrics/ate.h"
 #include "eval/compare.h"
-#include "eval/coverage.h"
-#include "eval/error_csv.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/coverage.h"
+#include "eval/metrics/error_csv.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/plotting.h"
-#include "eval/rpe.h"
-#include "eval/summary.h"
+#include "eval/metrics/rpe.h"
+#include "eval/metrics/summary.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "eval/ate.h"
-#include "eval/rpe.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/rpe.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/stopwatch.h"
+#include "eval/plot_scripts.h"
 
 extern char** environ;
 
@@ -32,24 +33,34 @@ int run_program(const std::string& program, const std::vector<std::string>& args
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// -B: Python writes no __pycache__ beside the scripts, which would be left behind in an
+// installed package's folder when the package is removed (a run as root can write there).
+const char* const kNoBytecode = "-B";
+
 std::string plot_python() {
   const char* env = std::getenv("SLAMKIT_PYTHON");
   return env && *env ? env : "/usr/bin/python3";
 }
 
-std::filesystem::path plot_script(const std::string& name = "plot.py") {
-  const char* env = std::getenv("SLAMKIT_EVAL_SCRIPTS");
-  const std::filesystem::path dir = env && *env ? env : SLAMKIT_EVAL_SCRIPT_DIR;
-  return dir / name;
+// `script`'s path, else nothing and `problem` says which folders lack it.
+std::optional<std::filesystem::path> plot_script(const std::string& script, std::string& problem) {
+  const std::vector<std::filesystem::path> dirs = plot_script_dirs();
+  if (auto found = find_in(dirs, script)) return found;
+  problem = "no " + script + " in";
+  for (size_t i = 0; i < dirs.size(); ++i) problem += (i ? " or " : " ") + dirs[i].string();
+  problem += " (set SLAMKIT_EVAL_SCRIPTS to the folder of slamkit's plot scripts)";
+  return std::nullopt;
 }
 
 }  // namespace
 
 PlotOutcome draw_figures(const nlohmann::json& figures) {
+  PlotOutcome outcome;
+  const std::optional<std::filesystem::path> script = plot_script("plot.py", outcome.problem);
+  if (!script) return outcome;
   const std::string python = plot_python();
   Stopwatch watch;
-  const int code = run_program(python, {plot_script().string(), figures.dump()});
-  PlotOutcome outcome;
+  const int code = run_program(python, {kNoBytecode, script->string(), figures.dump()});
   outcome.seconds = watch.lap() / 1000.0;
   outcome.drawn = code == 0;
   outcome.python_missing = code == -1 || code == 127 || code == kNoMatplotlib;
@@ -67,7 +78,13 @@ std::optional<std::filesystem::path> draw_plot(const std::string& script,
                                                const std::vector<std::string>& args,
                                                const std::filesystem::path& png,
                                                const std::string& what) {
-  std::vector<std::string> full = {plot_script(script).string()};
+  std::string problem;
+  const std::optional<std::filesystem::path> path = plot_script(script, problem);
+  if (!path) {
+    std::cerr << "slamkit: note: no " << what << " drawn: " << problem << "\n";
+    return std::nullopt;
+  }
+  std::vector<std::string> full = {kNoBytecode, path->string()};
   full.insert(full.end(), args.begin(), args.end());
   const int code = run_program(plot_python(), full);
   if (code != 0 || !std::filesystem::exists(png)) {

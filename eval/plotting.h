@@ -21,8 +21,8 @@ struct PlotOutcome {
 
 // Runs plot.py with `figures`, a JSON list of {"figure": KIND, ...} (see plot.py), under
 // $SLAMKIT_PYTHON, else /usr/bin/python3 (Debian's, which has matplotlib; the python3 on
-// PATH may be another build without it). plot.py is found in $SLAMKIT_EVAL_SCRIPTS, else in
-// the source folder of eval/.
+// PATH may be another build without it). plot.py is found as eval/plot_scripts.h says:
+// $SLAMKIT_EVAL_SCRIPTS, else beside an installed binary, else in the source folder of eval/.
 PlotOutcome draw_figures(const nlohmann::json& figures);
 
 // Runs the plot script `script` (found as plot.py is) with `args` under the same interpreter.

@@ -1,5 +1,5 @@
 // slamkit.settings: the pipeline's settings as a nested dict, read with the checks of
-// `--settings` files (lib/io/settings_yaml.h), so that a bad key or value raises the CLI's
+// `--settings` files (lib/settings/settings_yaml.h), so that a bad key or value raises the CLI's
 // message. A dict is turned into the YAML text a settings file would hold and read as one.
 #include <pybind11/stl/filesystem.h>
 #include <yaml-cpp/yaml.h>
@@ -11,7 +11,7 @@
 
 #include "bin/python/bindings.h"
 #include "core/error.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 
 namespace slamkit::python {
 namespace {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 
 namespace slamkit::regress {
 namespace {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "eval/checksum.h"
+#include "eval/metrics/checksum.h"
 #include "eval/regression/process.h"
 #include "eval/regression/report.h"
 

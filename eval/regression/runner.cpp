@@ -13,11 +13,11 @@
 #include <thread>
 
 #include "core/error.h"
-#include "eval/checksum.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/checksum.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/regression/baseline.h"
 #include "eval/regression/process.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 
 namespace slamkit::regress {
 namespace {

@@ -10,7 +10,7 @@
 #include "eval/regression/metrics.h"
 #include "eval/regression/yaml_checks.h"
 #include "io/path_kind.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "io/tum_sequence.h"
 #include "io/yaml_file.h"
 

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 #include "eval/loop_accuracy.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 #include "io/line_reader.h"
 #include "io/path_kind.h"
 #include "io/trajectory_io.h"

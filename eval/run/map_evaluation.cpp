@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "eval/alignment.h"
-#include "eval/association.h"
+#include "eval/metrics/alignment.h"
+#include "eval/metrics/association.h"
 #include "eval/run/map_points.h"
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"

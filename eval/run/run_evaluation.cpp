@@ -4,7 +4,7 @@
 
 #include "eval/evaluation_run.h"
 #include "eval/loop_accuracy.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/run/map_evaluation.h"
 #include "io/path_kind.h"
 

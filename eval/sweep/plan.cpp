@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "eval/checksum.h"
+#include "eval/metrics/checksum.h"
 #include "io/atomic_file.h"
 #include "io/path_kind.h"
 

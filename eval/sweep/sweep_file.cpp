@@ -7,7 +7,7 @@
 #include "eval/regression/metrics.h"
 #include "eval/regression/yaml_checks.h"
 #include "io/path_kind.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "io/yaml_file.h"
 
 namespace slamkit::sweep {

@@ -12,7 +12,7 @@
 #include "core/number_format.h"
 #include "io/atomic_file.h"
 #include "io/camera_yaml.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "io/trajectory_io.h"
 
 namespace fs = std::filesystem;

@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <random>
 
-#include "eval/association.h"
-#include "eval/ate.h"
-#include "eval/rpe.h"
+#include "eval/metrics/association.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/rpe.h"
 #include "io/trajectory_io.h"
 
 namespace {

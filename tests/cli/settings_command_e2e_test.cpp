@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "core/settings/settings.h"
-#include "io/settings_reference.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_reference.h"
+#include "settings/settings_yaml.h"
 #include "support/test_data.h"
 
 namespace slamkit {

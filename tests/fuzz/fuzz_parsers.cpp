@@ -11,7 +11,7 @@
 #include "eval/sweep/sweep_file.h"
 #include "io/camera_yaml.h"
 #include "io/png_file.h"
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"
 

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <string>
 
-#include "eval/association.h"
-#include "eval/ate.h"
+#include "eval/metrics/association.h"
+#include "eval/metrics/ate.h"
 #include "pipeline/batch_engine.h"
 #include "support/synthetic_sequence.h"
 

@@ -13,8 +13,8 @@
 #include <thread>
 
 #include "core/error.h"
-#include "eval/checksum.h"
-#include "eval/metrics_json.h"
+#include "eval/metrics/checksum.h"
+#include "eval/metrics/metrics_json.h"
 #include "eval/regression/metrics.h"
 #include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "eval/report/base64.h"
+#include "eval/report/report_assets.h"
 #include "io/trajectory_io.h"
 #include "report/mesh_fixtures.h"
 #include "support/test_data.h"
@@ -242,6 +243,29 @@ TEST(ReportPage, ThePageCarriesItsScriptsAndFetchesNothing) {
   EXPECT_NE(html.find("default-src 'none'"), std::string::npos);
   EXPECT_NE(html.find("OrbitControls"), std::string::npos);
   EXPECT_NE(html.find("WebGLRenderer"), std::string::npos);
+}
+
+// three.js is MIT-licenced: every copy must carry its copyright and permission notice, so the
+// page holds them in the very script element of the inlined code, just before it.
+TEST(ReportPage, ThePageCarriesThreeJsCopyrightAndLicenceBeforeItsCode) {
+  const fs::path dir = make_run_folder("report_licence");
+  write_report({dir}, dir / "report.html", ReportOptions{});
+  const std::string html = test::read_text(dir / "report.html");
+  const size_t notice = html.find("/*! three.js r111");
+  ASSERT_NE(notice, std::string::npos);
+  const size_t code = html.find(report_assets::three_js.substr(0, 100), notice);
+  ASSERT_NE(code, std::string::npos);
+  const std::string between = html.substr(notice, code - notice);
+  EXPECT_EQ(between.find("</script"), std::string::npos);
+  EXPECT_NE(between.find("Copyright © 2010-2017 three.js authors"), std::string::npos);
+  EXPECT_NE(between.find("MIT licence"), std::string::npos);
+  EXPECT_NE(between.find("Permission is hereby granted, free of charge"), std::string::npos);
+  EXPECT_NE(between.find("The above copyright notice and this permission notice shall be"),
+            std::string::npos);
+  EXPECT_NE(between.find("THE SOFTWARE IS PROVIDED \"AS IS\", WITHOUT WARRANTY OF ANY KIND"),
+            std::string::npos);
+  EXPECT_NE(between.find("OrbitControls"), std::string::npos);
+  EXPECT_NE(between.find("*/"), std::string::npos);  // the comment ends before the code
 }
 
 TEST(ReportPage, RefusesWhatIsNotARunFolderAndMalformedFilesWithFileAndLine) {

@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "eval/ate.h"
-#include "eval/coverage.h"
-#include "eval/rpe.h"
-#include "eval/statistics.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/coverage.h"
+#include "eval/metrics/rpe.h"
+#include "eval/metrics/statistics.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {

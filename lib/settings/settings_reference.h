@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "core/number_format.h"
-#include "io/settings_fields.h"
+#include "settings/settings_fields.h"
 
 namespace slamkit {
 

@@ -6,8 +6,8 @@
 
 #include "core/association.h"
 #include "core/trajectory.h"
-#include "eval/alignment.h"
-#include "eval/statistics.h"
+#include "eval/metrics/alignment.h"
+#include "eval/metrics/statistics.h"
 
 namespace slamkit::eval {
 

@@ -1,4 +1,4 @@
-#include "eval/error_csv.h"
+#include "eval/metrics/error_csv.h"
 
 #include <charconv>
 #include <fstream>

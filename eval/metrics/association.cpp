@@ -1,4 +1,4 @@
-#include "eval/association.h"
+#include "eval/metrics/association.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // Per-pose and per-pair error tables (CSV with a header), for plots and other tools.
 #include <filesystem>
 
-#include "eval/ate.h"
-#include "eval/rpe.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/rpe.h"
 
 namespace slamkit::eval {
 

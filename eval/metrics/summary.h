@@ -3,9 +3,9 @@
 // --verbose output (one "name value unit" per line).
 #include <string>
 
-#include "eval/ate.h"
-#include "eval/coverage.h"
-#include "eval/rpe.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/coverage.h"
+#include "eval/metrics/rpe.h"
 
 namespace slamkit::eval {
 

@@ -1,4 +1,4 @@
-#include "eval/alignment.h"
+#include "eval/metrics/alignment.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>

@@ -12,7 +12,7 @@
 #include "core/enum_names.h"
 #include "core/number_format.h"
 #include "core/settings/settings.h"
-#include "io/setting_note.h"
+#include "settings/setting_note.h"
 #include "io/value_range.h"
 
 namespace slamkit {

@@ -1,4 +1,4 @@
-#include "eval/checksum.h"
+#include "eval/metrics/checksum.h"
 
 #include <fstream>
 #include <vector>

@@ -1,9 +1,9 @@
-#include "eval/ate.h"
+#include "eval/metrics/ate.h"
 
 #include <cmath>
 
 #include "core/pose.h"
-#include "eval/association.h"
+#include "eval/metrics/association.h"
 
 namespace slamkit::eval {
 

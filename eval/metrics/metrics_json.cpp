@@ -1,4 +1,4 @@
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "core/error.h"
-#include "eval/checksum.h"
+#include "eval/metrics/checksum.h"
 #include "io/path_kind.h"
 
 namespace slamkit::eval {

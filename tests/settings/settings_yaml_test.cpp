@@ -1,4 +1,4 @@
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "io/settings_fields.h"
+#include "settings/settings_fields.h"
 #include "support/test_data.h"
 
 namespace slamkit {

@@ -1,11 +1,11 @@
-#include "io/settings_reference.h"
+#include "settings/settings_reference.h"
 
 #include <limits>
 #include <sstream>
 #include <type_traits>
 
 #include "core/number_format.h"
-#include "io/settings_fields.h"
+#include "settings/settings_fields.h"
 
 namespace slamkit {
 namespace {

@@ -2,9 +2,9 @@
 // for real systems' trajectories, reproduced to the printed digits.
 #include <gtest/gtest.h>
 
-#include "eval/association.h"
-#include "eval/ate.h"
-#include "eval/rpe.h"
+#include "eval/metrics/association.h"
+#include "eval/metrics/ate.h"
+#include "eval/metrics/rpe.h"
 #include "io/trajectory_io.h"
 #include "support/test_data.h"
 

@@ -1,6 +1,6 @@
 // The settings reference (docs/settings.md, `slamkit settings`) and the field list it is made
 // from: every struct member is visited, and every visited key can be set from YAML.
-#include "io/settings_reference.h"
+#include "settings/settings_reference.h"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -13,9 +13,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "io/aggregate_arity.h"
-#include "io/settings_fields.h"
-#include "io/settings_yaml.h"
+#include "settings/aggregate_arity.h"
+#include "settings/settings_fields.h"
+#include "settings/settings_yaml.h"
 #include "support/test_data.h"
 
 namespace slamkit {

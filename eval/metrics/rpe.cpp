@@ -1,4 +1,4 @@
-#include "eval/rpe.h"
+#include "eval/metrics/rpe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "core/pose.h"
-#include "eval/statistics.h"
+#include "eval/metrics/statistics.h"
 
 namespace slamkit::eval {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/settings_yaml.h"
+#include "settings/settings_yaml.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "core/number_format.h"
 #include "io/atomic_file.h"
-#include "io/settings_fields.h"
+#include "settings/settings_fields.h"
 #include "io/yaml_file.h"
 
 namespace slamkit {

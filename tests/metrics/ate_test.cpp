@@ -1,4 +1,4 @@
-#include "eval/ate.h"
+#include "eval/metrics/ate.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
-#include "eval/association.h"
+#include "eval/metrics/association.h"
 
 namespace slamkit::eval {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "core/association.h"
 #include "core/trajectory.h"
-#include "eval/statistics.h"
+#include "eval/metrics/statistics.h"
 
 namespace slamkit::eval {
 

@@ -1,9 +1,9 @@
-#include "eval/summary.h"
+#include "eval/metrics/summary.h"
 
 #include <cstdarg>
 #include <cstdio>
 
-#include "eval/metrics_json.h"
+#include "eval/metrics/metrics_json.h"
 
 namespace slamkit::eval {
 namespace {

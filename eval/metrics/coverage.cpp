@@ -1,4 +1,4 @@
-#include "eval/coverage.h"
+#include "eval/metrics/coverage.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,10 +1,10 @@
-#include "eval/rpe.h"
+#include "eval/metrics/rpe.h"
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "eval/alignment.h"
-#include "eval/association.h"
+#include "eval/metrics/alignment.h"
+#include "eval/metrics/association.h"
 
 namespace slamkit::eval {
 namespace {
