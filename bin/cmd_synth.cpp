@@ -2,15 +2,13 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <optional>
 
 #include "bin/command.h"
 #include "bin/output_folder.h"
-#include "core/error.h"
 #include "core/progress.h"
 #include "datasets/synth/room_layout.h"
+#include "datasets/synth/sensor_choice.h"
 #include "datasets/synth/sequence_writer.h"
-#include "io/yaml_file.h"
 
 namespace slamkit::cli {
 namespace {
@@ -21,28 +19,8 @@ struct SynthArgs {
   uint64_t seed = 1;
   int threads = 0;
   std::string out;
-  std::string sensor = "ideal";
-  std::string sensor_settings;  // YAML file of kinect settings
-  std::string sensor_off, sensor_on;
+  synth::SensorChoice sensor;
 };
-
-// The kinect sensor's settings: defaults, then the settings file, then the effect switches.
-std::optional<synth::KinectSettings> kinect_settings(const SynthArgs& args) {
-  if (args.sensor == "ideal") {
-    if (!args.sensor_settings.empty() || !args.sensor_off.empty() || !args.sensor_on.empty())
-      throw InputError("--sensor-settings, --sensor-off and --sensor-on need --sensor kinect");
-    return std::nullopt;
-  }
-  if (args.sensor != "kinect")
-    throw InputError("--sensor: unknown sensor '" + args.sensor + "' (ideal or kinect)");
-  synth::KinectSettings settings;
-  if (!args.sensor_settings.empty())
-    settings = synth::read_kinect_settings(
-        load_yaml_file(args.sensor_settings, "sensor settings"), args.sensor_settings);
-  synth::switch_effects(settings, args.sensor_off, false, "--sensor-off");
-  synth::switch_effects(settings, args.sensor_on, true, "--sensor-on");
-  return settings;
-}
 
 void run_synth(const SynthArgs& args) {
   check_output_folder("--out", args.out);
@@ -53,7 +31,7 @@ void run_synth(const SynthArgs& args) {
   spec.seed = args.seed;
   spec.threads = args.threads;
   spec.out = args.out;
-  spec.kinect = kinect_settings(args);
+  spec.kinect = synth::kinect_settings(args.sensor);
   synth::check_spec(spec);  // before the scene's textures are built: bad arguments fail at once
 
   const synth::SyntheticScene scene = synth::make_named_scene(synth::preset_scene(spec.preset));
@@ -63,7 +41,7 @@ void run_synth(const SynthArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("synth: %d frames of '%s' (seed %llu, %s sensor) in %.1f s -> %s\n", spec.frames,
               args.preset.c_str(), static_cast<unsigned long long>(spec.seed),
-              args.sensor.c_str(), seconds, spec.out.string().c_str());
+              args.sensor.sensor.c_str(), seconds, spec.out.string().c_str());
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {
@@ -81,15 +59,15 @@ const bool kRegistered = register_command([](CLI::App& root) {
   std::string effects;
   for (const std::string& name : synth::kinect_effect_names())
     effects += (effects.empty() ? "" : ", ") + name;
-  cmd->add_option("--sensor", args->sensor,
+  cmd->add_option("--sensor", args->sensor.sensor,
                   "Sensor: ideal (exact stamps, no blur, Gaussian noise) or kinect (Kinect v1 "
                   "effects, see docs/sensor.md)")
       ->capture_default_str();
-  cmd->add_option("--sensor-off", args->sensor_off,
+  cmd->add_option("--sensor-off", args->sensor.effects_off,
                   "Kinect effects to turn off, comma-separated: " + effects);
-  cmd->add_option("--sensor-on", args->sensor_on,
+  cmd->add_option("--sensor-on", args->sensor.effects_on,
                   "Kinect effects to turn on (lens_distortion is off by default)");
-  cmd->add_option("--sensor-settings", args->sensor_settings,
+  cmd->add_option("--sensor-settings", args->sensor.settings_file,
                   "YAML file of kinect settings, as synthetic.yaml's `kinect:` map (keys left "
                   "out keep their defaults)");
   cmd->callback([args] { run_synth(*args); });

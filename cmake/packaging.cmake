@@ -17,6 +17,9 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_SOURCE_DIR}/cmake/packaging_check.cmake)
 # Plots run under /usr/bin/python3 with matplotlib; without it slamkit says so and writes the
-# metrics all the same.
+# metrics all the same. The Python module, when built, needs numpy.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS python3-matplotlib)
+if(SLAMKIT_BUILD_PYTHON)
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-matplotlib, python3-numpy")
+endif()
 include(CPack)

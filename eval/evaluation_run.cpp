@@ -76,7 +76,7 @@ void require_plausible_stamps(const Trajectory& t, const std::string& name) {
 }
 
 struct Inputs {
-  TrajectoryFile gt, est;
+  std::shared_ptr<const TrajectoryFile> gt, est;
   std::vector<IndexPair> pairs;
   AssociationOptions association;
   TrajectoryReadOptions reading;
@@ -89,20 +89,26 @@ Inputs load_inputs(EvaluationRequest& a, const Rules& rules, bool need_pairs) {
   Inputs in;
   in.association = rules.association;
   in.reading = rules.reading;
-  in.gt = read_tum_trajectory(a.gt, in.reading);
-  in.est = read_tum_trajectory(a.est, in.reading);
-  require_plausible_stamps(in.gt.trajectory, a.gt);
-  require_plausible_stamps(in.est.trajectory, a.est);
-  print_reader_warnings(a, in.gt);
-  print_reader_warnings(a, in.est);
-  require_associable(in.gt.trajectory, in.est.trajectory, a.gt, a.est, in.association);
-  in.pairs = associate(in.gt.trajectory, in.est.trajectory, in.association);
-  in.coverage = compute_coverage(in.gt.trajectory, in.est.trajectory, in.pairs.size());
+  const auto read = [&](const std::shared_ptr<const TrajectoryFile>& given,
+                        const std::string& path) {
+    return given ? given
+                 : std::make_shared<const TrajectoryFile>(read_tum_trajectory(path, in.reading));
+  };
+  in.gt = read(a.gt_data, a.gt);
+  in.est = read(a.est_data, a.est);
+  const Trajectory& gt = in.gt->trajectory;
+  const Trajectory& est = in.est->trajectory;
+  require_plausible_stamps(gt, a.gt);
+  require_plausible_stamps(est, a.est);
+  print_reader_warnings(a, *in.gt);
+  print_reader_warnings(a, *in.est);
+  require_associable(gt, est, a.gt, a.est, in.association);
+  in.pairs = associate(gt, est, in.association);
+  in.coverage = compute_coverage(gt, est, in.pairs.size());
   // Without any overlap in time no metric can be computed: said as for ATE, not as RPE's
   // "no pose pair" after a coverage warning.
   if (need_pairs || (in.pairs.empty() && in.coverage.overlap_s == 0))
-    require_enough_pairs(in.pairs.size(), in.gt.trajectory, in.est.trajectory, a.gt, a.est,
-                         in.association);
+    require_enough_pairs(in.pairs.size(), gt, est, a.gt, a.est, in.association);
   if (const auto text = coverage_warning(in.coverage)) warn(a, *text);
   return in;
 }
@@ -141,6 +147,7 @@ void resolve_outputs(EvaluationRequest& a) {
   in_out(a.ate_csv, "errors.csv");
   in_out(a.rpe_csv, "rpe.csv");
   in_out(a.aligned_path, "aligned.txt");
+  if (a.title.empty() && a.gt_data) a.title = a.gt;
   if (a.title.empty()) {
     const fs::path parent = fs::absolute(a.gt).parent_path();
     a.title =
@@ -160,7 +167,8 @@ json common_json(const EvaluationRequest& a, const Inputs& in) {
             {"time_unit", to_string(in.reading.time_unit)},
             {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
-           {{"groundtruth", input_json(a.gt, in.gt)}, {"estimate", input_json(a.est, in.est)}}},
+           {{"groundtruth", input_json(a.gt_data ? "" : a.gt, *in.gt)},
+            {"estimate", input_json(a.est_data ? "" : a.est, *in.est)}}},
           {"coverage", coverage_json(in.coverage)}};
 }
 
@@ -212,7 +220,7 @@ bool draw_plots(const EvaluationRequest& a, const json& figures) {
 // `eval ate`, `eval rpe` and `eval all`: one reading of the inputs, then each metric.
 }  // namespace
 
-bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
+bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe, EvaluationResult* result) {
   const Rules rules = resolve_rules(a);
   a.rpe.unit = parse_delta_unit(a.unit);
   a.rpe.offset = a.offset;
@@ -222,8 +230,12 @@ bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
   const bool need_pairs = do_ate || scale_rpe || a.rpe.convention == RpeConvention::kEvo;
   const Inputs in = load_inputs(a, rules, need_pairs);
   resolve_outputs(a);
-  const Trajectory& gt = in.gt.trajectory;
-  const Trajectory& est = in.est.trajectory;
+  const Trajectory& gt = in.gt->trajectory;
+  const Trajectory& est = in.est->trajectory;
+  if (result) {
+    result->gt = in.gt;
+    result->est = in.est;
+  }
 
   // Each metric writes its files as soon as it is done, so that a million-pose run holds one
   // metric's per-pose data at a time.
@@ -245,13 +257,17 @@ bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
                            "estimate " + a.est + " aligned to " + a.gt + " (" + a.align + ")");
     if (!a.quiet) std::fputs(ate_summary(ate, in.coverage).c_str(), stdout);
     add_figures(a, "ate", a.ate_csv, figures);
+    if (result) {
+      merge_metrics(result->metrics, update);
+      result->ate = std::move(ate);
+    }
   } else if (scale_rpe) {
     alignment = align(gt, est, in.pairs, ate_options.align, a.align_first, a.gt, a.est);
   }
   if (do_rpe) {
     a.rpe.scale = scale_rpe ? alignment.scale : 1.0;
     warn_short_time_delta(a, est);
-    const RpeResult rpe = compute_rpe(gt, est, in.pairs, a.rpe, a.est);
+    RpeResult rpe = compute_rpe(gt, est, in.pairs, a.rpe, a.est);
     require_finite(rpe.trans, "RPE", a.est);
     require_finite(rpe.rot_deg, "RPE rotation", a.est);
     json update = common;
@@ -261,8 +277,16 @@ bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
     if (!a.rpe_csv.empty()) write_rpe_csv(a.rpe_csv, rpe);
     if (!a.quiet) std::fputs(rpe_summary(rpe, a.rpe).c_str(), stdout);
     add_figures(a, "rpe", a.rpe_csv, figures);
+    if (result) {
+      merge_metrics(result->metrics, update);
+      result->rpe = std::move(rpe);
+    }
   }
   return draw_plots(a, figures);
+}
+
+std::vector<IndexPair> associate_inputs(EvaluationRequest& a) {
+  return load_inputs(a, resolve_rules(a), false).pairs;
 }
 
 }  // namespace slamkit::eval

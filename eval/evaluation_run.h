@@ -1,17 +1,24 @@
 #pragma once
 // The evaluation run behind `slamkit eval ate|rpe|all`, also used by `slamkit run` and `track`
 // when the sequence has groundtruth: read both files, associate, compute, write, summarise, plot.
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "eval/metrics/ate.h"
 #include "eval/metrics/rpe.h"
+#include "io/trajectory_io.h"
 
 namespace slamkit::eval {
 
 // Options of `eval ate`, `eval rpe` and `eval all` (each registers the ones it uses).
 struct EvaluationRequest {
   std::string gt, est;
+  // In-process callers (the Python module) may give trajectories already in memory: gt and est
+  // then only name them in messages, and metrics.json's inputs have no path or checksum.
+  std::shared_ptr<const TrajectoryFile> gt_data, est_data;
   // tum (the benchmark scripts) or evo: the defaults of the rules left unset below
   // (association, max_diff, duplicate stamps, RPE convention). See eval/README.md.
   std::string convention = "tum";
@@ -41,8 +48,23 @@ struct EvaluationRequest {
 // "xy,xz" -> {"xy", "xz"}: the trajectory plot planes of --planes.
 std::vector<std::string> split_planes(const std::string& text);
 
+// What an evaluation computed, for in-process callers: the trajectories as read, the
+// metrics.json it wrote (or would have written into an empty file) and the per-pose and per-pair
+// results.
+struct EvaluationResult {
+  std::shared_ptr<const TrajectoryFile> gt, est;
+  nlohmann::json metrics = nlohmann::json::object();
+  std::optional<AteResult> ate;
+  std::optional<RpeResult> rpe;
+};
+
 // Throws InputError for unreadable input. Returns false (after saying why on stderr) when plots
-// asked for with --plot were not drawn.
-bool run_evaluation(EvaluationRequest& request, bool do_ate, bool do_rpe);
+// asked for with --plot were not drawn. Fills `result` when given.
+bool run_evaluation(EvaluationRequest& request, bool do_ate, bool do_rpe,
+                    EvaluationResult* result = nullptr);
+
+// The (groundtruth, estimate) index pairs the evaluation would measure: the inputs read (or
+// given) and associated under the request's rules, with the same checks.
+std::vector<IndexPair> associate_inputs(EvaluationRequest& request);
 
 }  // namespace slamkit::eval

@@ -41,14 +41,15 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_BUILD_DIR:-$root/build}"
 
 # Build tools (dpkg-dev and file for `cpack -G DEB`: dpkg-shlibdeps finds the .deb's
-# dependencies), the libraries of the stack, the test framework, matplotlib for the plots, and
-# three.js, which the build inlines into the report page.
+# dependencies), the libraries of the stack, the test frameworks, matplotlib for the plots,
+# three.js, which the build inlines into the report page, and pybind11 and numpy for the Python
+# module (bin/python).
 packages=(
   g++ cmake make pkg-config dpkg-dev file
   libeigen3-dev libopencv-dev libceres-dev libpcl-dev libyaml-cpp-dev libpng-dev zlib1g-dev
   liblodepng-dev libisal-dev
-  libcli11-dev nlohmann-json3-dev libgtest-dev
-  python3-matplotlib libjs-three
+  libcli11-dev nlohmann-json3-dev libgtest-dev python3-pytest
+  python3-matplotlib libjs-three pybind11-dev python3-numpy python3-dev
 )
 if $test_tools; then
   packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev)

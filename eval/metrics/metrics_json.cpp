@@ -71,16 +71,19 @@ json coverage_json(const Coverage& c) {
 
 json input_json(const std::filesystem::path& path, const TrajectoryFile& file) {
   const Trajectory& t = file.trajectory;
-  return {{"path", path.string()},
-          {"fnv1a64", fnv1a64_file(path)},
-          {"poses", t.size()},
-          {"start", t.start_time()},
-          {"end", t.end_time()},
-          {"zero_quaternions_skipped", file.zero_quaternions_skipped},
-          {"non_finite_lines_skipped", file.non_finite_lines_skipped},
-          {"duplicate_stamps_dropped", file.duplicate_stamps_dropped},
-          {"was_unsorted", file.was_unsorted},
-          {"warnings", file.warnings}};
+  json j = {{"poses", t.size()},
+            {"start", t.start_time()},
+            {"end", t.end_time()},
+            {"zero_quaternions_skipped", file.zero_quaternions_skipped},
+            {"non_finite_lines_skipped", file.non_finite_lines_skipped},
+            {"duplicate_stamps_dropped", file.duplicate_stamps_dropped},
+            {"was_unsorted", file.was_unsorted},
+            {"warnings", file.warnings}};
+  if (!path.empty()) {
+    j["path"] = path.string();
+    j["fnv1a64"] = fnv1a64_file(path);
+  }
+  return j;
 }
 
 namespace {
@@ -105,6 +108,14 @@ void merge_into_metrics_file(const std::filesystem::path& path, const json& upda
   if (std::filesystem::exists(path)) {
     merged = read_metrics_file(path);
   }
+  merge_metrics(merged, update);
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path);
+  out << merged.dump(2) << "\n";
+  if (!out) throw_input_error(path.string(), "cannot write file");
+}
+
+void merge_metrics(json& merged, const json& update) {
   for (const auto& [key, value] : update.items()) {
     const bool replace = key == "ate" || key == "rpe" || !value.is_object() ||
                          !merged.contains(key) || !merged[key].is_object();
@@ -114,10 +125,6 @@ void merge_into_metrics_file(const std::filesystem::path& path, const json& upda
       merged[key].update(value);
     }
   }
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  out << merged.dump(2) << "\n";
-  if (!out) throw_input_error(path.string(), "cannot write file");
 }
 
 json read_metrics_file(const std::filesystem::path& path) {

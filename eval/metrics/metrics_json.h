@@ -23,7 +23,8 @@ nlohmann::json ate_json(const AteResult& ate);
 std::string rotation_withheld_reason(const Alignment& a);
 nlohmann::json rpe_json(const RpeResult& rpe, const RpeOptions& options);
 nlohmann::json coverage_json(const Coverage& c);
-// path, fnv1a64 checksum, poses, start, end, skipped-line counts and warnings.
+// path and fnv1a64 checksum (left out when `path` is empty: a trajectory given in memory),
+// poses, start, end, skipped-line counts and warnings.
 nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFile& file);
 
 // Merges `update` into the JSON file at `path` (created if missing): "ate" and "rpe" are
@@ -31,6 +32,8 @@ nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFil
 // so `eval ate` and `eval rpe` can share one file. Throws InputError if the existing file is
 // not a JSON object (rather than clobbering it) or if `update` holds a non-finite number.
 void merge_into_metrics_file(const std::filesystem::path& path, const nlohmann::json& update);
+// The same merge of `update` into `merged`, in memory.
+void merge_metrics(nlohmann::json& merged, const nlohmann::json& update);
 
 // Reads a metrics.json; InputError naming the file when missing or malformed.
 nlohmann::json read_metrics_file(const std::filesystem::path& path);
