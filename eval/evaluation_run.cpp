@@ -20,6 +20,7 @@
 #include "eval/plotting.h"
 #include "eval/metrics/rpe.h"
 #include "eval/metrics/summary.h"
+#include "io/trajectory_format.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {
@@ -75,6 +76,18 @@ void require_plausible_stamps(const Trajectory& t, const std::string& name) {
   throw_input_error(name, text);
 }
 
+// A file's format: its own option, else --format, else detected (nullopt).
+std::optional<TrajectoryFormat> file_format(const std::string& own, const std::string& both) {
+  const std::string& given = own.empty() ? both : own;
+  if (given.empty()) return std::nullopt;
+  return parse_trajectory_format(given);
+}
+
+std::optional<fs::path> kitti_times(const EvaluationRequest& a) {
+  if (a.kitti_times.empty()) return std::nullopt;
+  return fs::path(a.kitti_times);
+}
+
 struct Inputs {
   TrajectoryFile gt, est;
   std::vector<IndexPair> pairs;
@@ -89,8 +102,9 @@ Inputs load_inputs(EvaluationRequest& a, const Rules& rules, bool need_pairs) {
   Inputs in;
   in.association = rules.association;
   in.reading = rules.reading;
-  in.gt = read_tum_trajectory(a.gt, in.reading);
-  in.est = read_tum_trajectory(a.est, in.reading);
+  in.gt = read_trajectory(a.gt, file_format(a.gt_format, a.format), in.reading, kitti_times(a));
+  in.est =
+      read_trajectory(a.est, file_format(a.est_format, a.format), in.reading, kitti_times(a));
   require_plausible_stamps(in.gt.trajectory, a.gt);
   require_plausible_stamps(in.est.trajectory, a.est);
   print_reader_warnings(a, in.gt);
@@ -149,6 +163,13 @@ void resolve_outputs(EvaluationRequest& a) {
   if (a.system_name.empty()) a.system_name = fs::path(a.est).stem().string();
 }
 
+// input_json with the times.txt that stamped a KITTI file.
+json input_json_of(const EvaluationRequest& a, const std::string& path, const TrajectoryFile& f) {
+  json j = input_json(path, f);
+  if (f.format == "kitti") j["times"] = a.kitti_times.empty() ? "pose index" : a.kitti_times;
+  return j;
+}
+
 json common_json(const EvaluationRequest& a, const Inputs& in) {
   return {{"settings",
            {{"title", a.title},
@@ -160,7 +181,8 @@ json common_json(const EvaluationRequest& a, const Inputs& in) {
             {"time_unit", to_string(in.reading.time_unit)},
             {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
-           {{"groundtruth", input_json(a.gt, in.gt)}, {"estimate", input_json(a.est, in.est)}}},
+           {{"groundtruth", input_json_of(a, a.gt, in.gt)},
+            {"estimate", input_json_of(a, a.est, in.est)}}},
           {"coverage", coverage_json(in.coverage)}};
 }
 

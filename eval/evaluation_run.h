@@ -20,6 +20,10 @@ struct EvaluationRequest {
   std::string association;  // tum or evo; "" = the convention's
   std::string duplicates;   // last or first; "" = the convention's
   std::string time_unit = "s";
+  // tum, kitti or euroc; "" = detected from the content. --gt-format / --est-format win over
+  // --format.
+  std::string format, gt_format, est_format;
+  std::string kitti_times;  // --times: the KITTI times.txt of KITTI inputs ("" = pose index)
   std::string out_dir;    // metrics.json, CSVs, aligned.txt and plots unless overridden
   std::string json_path;  // --json
   std::string ate_csv, rpe_csv, aligned_path;

@@ -72,6 +72,7 @@ json coverage_json(const Coverage& c) {
 json input_json(const std::filesystem::path& path, const TrajectoryFile& file) {
   const Trajectory& t = file.trajectory;
   return {{"path", path.string()},
+          {"format", file.format},
           {"fnv1a64", fnv1a64_file(path)},
           {"poses", t.size()},
           {"start", t.start_time()},
