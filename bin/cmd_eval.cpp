@@ -191,6 +191,15 @@ const bool kRegistered = register_command([](CLI::App& root) {
   add_rpe_options(all_cmd, *all);
   all_cmd->callback([all] { evaluate_or_exit(*all, true, true); });
 
+  auto kitti = std::make_shared<eval::EvaluationRequest>();
+  CLI::App* kitti_cmd = eval_cmd->add_subcommand(
+      "kitti", "KITTI odometry metric: % and deg/m over 100..800 m segments (the devkit's)");
+  add_common_options(kitti_cmd, *kitti);
+  kitti_cmd->callback([kitti] {
+    if (!kitti->out_dir.empty()) check_output_folder("--out", kitti->out_dir);
+    eval::run_kitti_evaluation(*kitti);
+  });
+
   auto cmp = std::make_shared<CompareArgs>();
   CLI::App* cmp_cmd = eval_cmd->add_subcommand(
       "compare", "Compare evaluated runs (folders with metrics.json and errors.csv)");

@@ -16,6 +16,7 @@
 #include "eval/compare.h"
 #include "eval/metrics/coverage.h"
 #include "eval/metrics/error_csv.h"
+#include "eval/metrics/kitti_odometry.h"
 #include "eval/metrics/metrics_json.h"
 #include "eval/plotting.h"
 #include "eval/metrics/rpe.h"
@@ -285,6 +286,33 @@ bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe) {
     add_figures(a, "rpe", a.rpe_csv, figures);
   }
   return draw_plots(a, figures);
+}
+
+void run_kitti_evaluation(EvaluationRequest& a) {
+  const Inputs in = load_inputs(a, resolve_rules(a), true);
+  resolve_outputs(a);
+  // The devkit pairs frames by index; here the associated pairs, in order, are the frames.
+  std::vector<Eigen::Isometry3d> gt, est;
+  for (const IndexPair& pair : in.pairs) {
+    gt.push_back(in.gt.trajectory.pose(pair.first));
+    est.push_back(in.est.trajectory.pose(pair.second));
+  }
+  const KittiOdometryResult kitti = compute_kitti_odometry(gt, est);
+  if (kitti.segments.empty()) {
+    double path = 0;
+    for (size_t k = 1; k < gt.size(); ++k)
+      path += (gt[k].translation() - gt[k - 1].translation()).norm();
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "groundtruth path over the %zu matched frames is %.3f m: the KITTI metric's "
+                  "shortest segment needs more than 100 m",
+                  gt.size(), path);
+    throw_input_error(a.gt, text);
+  }
+  json update = common_json(a, in);
+  update["kitti"] = kitti_json(kitti, in.pairs.size());
+  if (!a.json_path.empty()) merge_into_metrics_file(a.json_path, update);
+  if (!a.quiet) std::fputs(kitti_summary(kitti, in.pairs.size()).c_str(), stdout);
 }
 
 }  // namespace slamkit::eval

@@ -49,4 +49,9 @@ std::vector<std::string> split_planes(const std::string& text);
 // asked for with --plot were not drawn.
 bool run_evaluation(EvaluationRequest& request, bool do_ate, bool do_rpe);
 
+// `eval kitti`: the KITTI odometry metric over the associated frames (for KITTI files without
+// times.txt, frame by frame), into metrics.json ("kitti") and the summary. InputError when the
+// groundtruth path is too short for a 100 m segment.
+void run_kitti_evaluation(EvaluationRequest& request);
+
 }  // namespace slamkit::eval
