@@ -79,7 +79,7 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
     if (times && index == stamps.values.size())
       throw_input_error(name, number,
                         "pose " + std::to_string(index + 1) + " has no stamp: " + times_name +
-                            " holds " + std::to_string(stamps.values.size()));
+                            " holds " + std::to_string(stamps.values.size()) + " stamps");
     const double stamp = times ? stamps.values[index] : double(index);
     ++index;
     if (!std::all_of(v, v + 12, [](double x) { return std::isfinite(x); }) ||
