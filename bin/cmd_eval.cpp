@@ -1,4 +1,4 @@
-// slamkit eval ate|rpe|all|compare: judge any TUM-format trajectory against groundtruth, as the
+// slamkit eval ate|rpe|all|compare: judge any TUM, KITTI or EuRoC trajectory against groundtruth, as the
 // TUM benchmark scripts (evaluate_ate.py, evaluate_rpe.py) and evo do. The metrics live in
 // eval/ (plain functions on trajectories); this file only wires files, options and output.
 #include <cstdio>
@@ -43,8 +43,19 @@ struct CompareArgs {
 };
 
 void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
-  cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (TUM format)")->required();
-  cmd->add_option("estimate", a.est, "Estimated trajectory (TUM format)")->required();
+  cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (tum, kitti or euroc)")
+      ->required();
+  cmd->add_option("estimate", a.est, "Estimated trajectory (tum, kitti or euroc)")->required();
+  const auto formats = CLI::IsMember({"tum", "kitti", "euroc"});
+  cmd->add_option("--format", a.format,
+                  "Format of both files: tum, kitti or euroc (default: detected per file)")
+      ->check(formats);
+  cmd->add_option("--gt-format", a.gt_format, "Format of the groundtruth (wins over --format)")
+      ->check(formats);
+  cmd->add_option("--est-format", a.est_format, "Format of the estimate (wins over --format)")
+      ->check(formats);
+  cmd->add_option("--times", a.kitti_times,
+                  "KITTI times.txt: the stamps of kitti files (default: the pose index in s)");
   cmd->add_option("--convention", a.convention,
                   "tum (the benchmark scripts) or evo: sets association, --max-diff, "
                   "--duplicate-stamps and --rpe-convention unless given")
@@ -179,6 +190,15 @@ const bool kRegistered = register_command([](CLI::App& root) {
   add_ate_options(all_cmd, *all);
   add_rpe_options(all_cmd, *all);
   all_cmd->callback([all] { evaluate_or_exit(*all, true, true); });
+
+  auto kitti = std::make_shared<eval::EvaluationRequest>();
+  CLI::App* kitti_cmd = eval_cmd->add_subcommand(
+      "kitti", "KITTI odometry metric: % and deg/m over 100..800 m segments (the devkit's)");
+  add_common_options(kitti_cmd, *kitti);
+  kitti_cmd->callback([kitti] {
+    if (!kitti->out_dir.empty()) check_output_folder("--out", kitti->out_dir);
+    eval::run_kitti_evaluation(*kitti);
+  });
 
   auto cmp = std::make_shared<CompareArgs>();
   CLI::App* cmp_cmd = eval_cmd->add_subcommand(

@@ -16,10 +16,12 @@
 #include "eval/compare.h"
 #include "eval/metrics/coverage.h"
 #include "eval/metrics/error_csv.h"
+#include "eval/metrics/kitti_odometry.h"
 #include "eval/metrics/metrics_json.h"
 #include "eval/plotting.h"
 #include "eval/metrics/rpe.h"
 #include "eval/metrics/summary.h"
+#include "io/trajectory_format.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {
@@ -75,6 +77,18 @@ void require_plausible_stamps(const Trajectory& t, const std::string& name) {
   throw_input_error(name, text);
 }
 
+// A file's format: its own option, else --format, else detected (nullopt).
+std::optional<TrajectoryFormat> file_format(const std::string& own, const std::string& both) {
+  const std::string& given = own.empty() ? both : own;
+  if (given.empty()) return std::nullopt;
+  return parse_trajectory_format(given);
+}
+
+std::optional<fs::path> kitti_times(const EvaluationRequest& a) {
+  if (a.kitti_times.empty()) return std::nullopt;
+  return fs::path(a.kitti_times);
+}
+
 struct Inputs {
   std::shared_ptr<const TrajectoryFile> gt, est;
   std::vector<IndexPair> pairs;
@@ -89,13 +103,15 @@ Inputs load_inputs(EvaluationRequest& a, const Rules& rules, bool need_pairs) {
   Inputs in;
   in.association = rules.association;
   in.reading = rules.reading;
+  // In-process callers may give a trajectory already read; else it is read in its format.
   const auto read = [&](const std::shared_ptr<const TrajectoryFile>& given,
-                        const std::string& path) {
+                        const std::string& path, const std::string& format) {
     return given ? given
-                 : std::make_shared<const TrajectoryFile>(read_tum_trajectory(path, in.reading));
+                 : std::make_shared<const TrajectoryFile>(read_trajectory(
+                       path, file_format(format, a.format), in.reading, kitti_times(a)));
   };
-  in.gt = read(a.gt_data, a.gt);
-  in.est = read(a.est_data, a.est);
+  in.gt = read(a.gt_data, a.gt, a.gt_format);
+  in.est = read(a.est_data, a.est, a.est_format);
   const Trajectory& gt = in.gt->trajectory;
   const Trajectory& est = in.est->trajectory;
   require_plausible_stamps(gt, a.gt);
@@ -156,6 +172,13 @@ void resolve_outputs(EvaluationRequest& a) {
   if (a.system_name.empty()) a.system_name = fs::path(a.est).stem().string();
 }
 
+// input_json with the times.txt that stamped a KITTI file.
+json input_json_of(const EvaluationRequest& a, const std::string& path, const TrajectoryFile& f) {
+  json j = input_json(path, f);
+  if (f.format == "kitti") j["times"] = a.kitti_times.empty() ? "pose index" : a.kitti_times;
+  return j;
+}
+
 json common_json(const EvaluationRequest& a, const Inputs& in) {
   return {{"settings",
            {{"title", a.title},
@@ -167,8 +190,8 @@ json common_json(const EvaluationRequest& a, const Inputs& in) {
             {"time_unit", to_string(in.reading.time_unit)},
             {"duplicate_stamps", to_string(in.reading.duplicates)}}},
           {"inputs",
-           {{"groundtruth", input_json(a.gt_data ? "" : a.gt, *in.gt)},
-            {"estimate", input_json(a.est_data ? "" : a.est, *in.est)}}},
+           {{"groundtruth", input_json_of(a, a.gt_data ? "" : a.gt, *in.gt)},
+            {"estimate", input_json_of(a, a.est_data ? "" : a.est, *in.est)}}},
           {"coverage", coverage_json(in.coverage)}};
 }
 
@@ -287,6 +310,33 @@ bool run_evaluation(EvaluationRequest& a, bool do_ate, bool do_rpe, EvaluationRe
 
 std::vector<IndexPair> associate_inputs(EvaluationRequest& a) {
   return load_inputs(a, resolve_rules(a), false).pairs;
+}
+
+void run_kitti_evaluation(EvaluationRequest& a) {
+  const Inputs in = load_inputs(a, resolve_rules(a), true);
+  resolve_outputs(a);
+  // The devkit pairs frames by index; here the associated pairs, in order, are the frames.
+  std::vector<Eigen::Isometry3d> gt, est;
+  for (const IndexPair& pair : in.pairs) {
+    gt.push_back(in.gt->trajectory.pose(pair.first));
+    est.push_back(in.est->trajectory.pose(pair.second));
+  }
+  const KittiOdometryResult kitti = compute_kitti_odometry(gt, est);
+  if (kitti.segments.empty()) {
+    double path = 0;
+    for (size_t k = 1; k < gt.size(); ++k)
+      path += (gt[k].translation() - gt[k - 1].translation()).norm();
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "groundtruth path over the %zu matched frames is %.3f m: the KITTI metric's "
+                  "shortest segment needs more than 100 m",
+                  gt.size(), path);
+    throw_input_error(a.gt, text);
+  }
+  json update = common_json(a, in);
+  update["kitti"] = kitti_json(kitti, in.pairs.size());
+  if (!a.json_path.empty()) merge_into_metrics_file(a.json_path, update);
+  if (!a.quiet) std::fputs(kitti_summary(kitti, in.pairs.size()).c_str(), stdout);
 }
 
 }  // namespace slamkit::eval

@@ -27,6 +27,10 @@ struct EvaluationRequest {
   std::string association;  // tum or evo; "" = the convention's
   std::string duplicates;   // last or first; "" = the convention's
   std::string time_unit = "s";
+  // tum, kitti or euroc; "" = detected from the content. --gt-format / --est-format win over
+  // --format.
+  std::string format, gt_format, est_format;
+  std::string kitti_times;  // --times: the KITTI times.txt of KITTI inputs ("" = pose index)
   std::string out_dir;    // metrics.json, CSVs, aligned.txt and plots unless overridden
   std::string json_path;  // --json
   std::string ate_csv, rpe_csv, aligned_path;
@@ -66,5 +70,10 @@ bool run_evaluation(EvaluationRequest& request, bool do_ate, bool do_rpe,
 // The (groundtruth, estimate) index pairs the evaluation would measure: the inputs read (or
 // given) and associated under the request's rules, with the same checks.
 std::vector<IndexPair> associate_inputs(EvaluationRequest& request);
+
+// `eval kitti`: the KITTI odometry metric over the associated frames (for KITTI files without
+// times.txt, frame by frame), into metrics.json ("kitti") and the summary. InputError when the
+// groundtruth path is too short for a 100 m segment.
+void run_kitti_evaluation(EvaluationRequest& request);
 
 }  // namespace slamkit::eval

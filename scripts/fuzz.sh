@@ -14,7 +14,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${SLAMKIT_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 seconds="${1:-60}"
 (($# > 0)) && shift
-targets=(tum_list association trajectory settings calibration png suite sweep)  # as tests/fuzz
+targets=(tum_list association trajectory kitti euroc trajectory_format settings calibration png suite sweep)  # as tests/fuzz
 (($# > 0)) && targets=("$@")
 
 "$root/scripts/sanitizer_build.sh" fuzzers
@@ -30,6 +30,8 @@ gather_seeds() {
     association) mapfile -t files < <(find "$data" -name 'associat*.txt') ;;
     trajectory) mapfile -t files < <(find "$data" -name '*.txt' ! -name 'rgb*' ! -name 'depth*' \
                                        ! -name 'associat*') ;;
+    kitti) mapfile -t files < <(find "$data" -path '*poses*' -name '*.txt' -o -name 'times.txt') ;;
+    euroc | trajectory_format) mapfile -t files < <(find "$data" -name 'data.csv' -path '*mav0*') ;;
     png) mapfile -t files < <(find "$data" -name '*.png' | sort | head -n 2) ;;
   esac
   local file

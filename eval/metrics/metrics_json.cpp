@@ -69,9 +69,24 @@ json coverage_json(const Coverage& c) {
           {"matched_estimate_poses", c.matched_est_poses}};
 }
 
+json kitti_json(const KittiOdometryResult& kitti, size_t pairs) {
+  json lengths = json::array();
+  for (const KittiLengthError& l : kitti.lengths)
+    lengths.push_back({{"length_m", l.length_m},
+                       {"segments", l.segments},
+                       {"trans_pct", l.trans_pct},
+                       {"rot_deg_per_m", l.rot_deg_per_m}});
+  return {{"pairs", pairs},
+          {"segments", kitti.segments.size()},
+          {"trans_pct", kitti.trans_pct},
+          {"rot_deg_per_m", kitti.rot_deg_per_m},
+          {"lengths", lengths}};
+}
+
 json input_json(const std::filesystem::path& path, const TrajectoryFile& file) {
   const Trajectory& t = file.trajectory;
-  json j = {{"poses", t.size()},
+  json j = {{"format", file.format},
+            {"poses", t.size()},
             {"start", t.start_time()},
             {"end", t.end_time()},
             {"zero_quaternions_skipped", file.zero_quaternions_skipped},
@@ -117,7 +132,7 @@ void merge_into_metrics_file(const std::filesystem::path& path, const json& upda
 
 void merge_metrics(json& merged, const json& update) {
   for (const auto& [key, value] : update.items()) {
-    const bool replace = key == "ate" || key == "rpe" || !value.is_object() ||
+    const bool replace = key == "ate" || key == "rpe" || key == "kitti" || !value.is_object() ||
                          !merged.contains(key) || !merged[key].is_object();
     if (replace) {
       merged[key] = value;

@@ -6,6 +6,8 @@
 // Each command writes its own sections and merges into an existing file.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+
+#include "eval/metrics/kitti_odometry.h"
 #include <string>
 
 #include "eval/metrics/ate.h"
@@ -23,8 +25,9 @@ nlohmann::json ate_json(const AteResult& ate);
 std::string rotation_withheld_reason(const Alignment& a);
 nlohmann::json rpe_json(const RpeResult& rpe, const RpeOptions& options);
 nlohmann::json coverage_json(const Coverage& c);
+nlohmann::json kitti_json(const KittiOdometryResult& kitti, size_t pairs);
 // path and fnv1a64 checksum (left out when `path` is empty: a trajectory given in memory),
-// poses, start, end, skipped-line counts and warnings.
+// format, poses, start, end, skipped-line counts and warnings.
 nlohmann::json input_json(const std::filesystem::path& path, const TrajectoryFile& file);
 
 // Merges `update` into the JSON file at `path` (created if missing): "ate" and "rpe" are

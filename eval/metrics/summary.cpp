@@ -59,4 +59,16 @@ std::string rpe_summary(const RpeResult& rpe, const RpeOptions& o) {
   return out;
 }
 
+std::string kitti_summary(const KittiOdometryResult& kitti, size_t pairs) {
+  std::string out;
+  append(out, "kitti_segments %zu (of %zu frames; 100..800 m from every 10th frame)\n",
+         kitti.segments.size(), pairs);
+  append(out, "kitti.translational_error %f %%\n", kitti.trans_pct);
+  append(out, "kitti.rotational_error %f deg/m\n", kitti.rot_deg_per_m);
+  for (const KittiLengthError& l : kitti.lengths)
+    append(out, "kitti.%gm %f %% %f deg/m (%zu segments)\n", l.length_m, l.trans_pct,
+           l.rot_deg_per_m, l.segments);
+  return out;
+}
+
 }  // namespace slamkit::eval

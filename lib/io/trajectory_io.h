@@ -28,6 +28,7 @@ struct TrajectoryFile {
   int duplicate_stamps_dropped = 0;   // lines of a repeated stamp that were not kept
   bool was_unsorted = false;          // the file was not in time order (now sorted)
   std::vector<std::string> warnings;  // one per skipped line or oddity, naming file and line
+  std::string format = "tum";         // tum, kitti or euroc (trajectory_format.h)
 };
 
 // Values beyond this magnitude are rejected: no pose or time is that large, and squares of

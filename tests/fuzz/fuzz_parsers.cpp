@@ -10,8 +10,11 @@
 #include "eval/regression/suite.h"
 #include "eval/sweep/sweep_file.h"
 #include "io/camera_yaml.h"
+#include "io/euroc_csv.h"
+#include "io/kitti_poses.h"
 #include "io/png_file.h"
 #include "settings/settings_yaml.h"
+#include "io/trajectory_format.h"
 #include "io/trajectory_io.h"
 #include "io/tum_sequence.h"
 
@@ -63,6 +66,30 @@ void parse_trajectory(const fs::path& input, const fs::path&) {
   read_tum_trajectory(input, {TimeUnit::kNanoseconds, DuplicateStamps::kKeepFirst});
 }
 
+// The input as a pose file, and as the times.txt of a fixed three-pose file.
+void parse_kitti(const fs::path& input, const fs::path& scratch) {
+  try {
+    read_kitti_poses(input, std::nullopt);
+  } catch (const InputError&) {  // refused as poses: go on to read it as times
+  }
+  const fs::path poses = scratch / "kitti_poses.txt";
+  if (!fs::exists(poses)) {
+    std::ofstream out(poses);
+    for (int k = 0; k < 3; ++k) out << "1 0 0 " << k << " 0 1 0 0 0 0 1 0\n";
+  }
+  read_kitti_poses(poses, input);
+}
+
+void parse_euroc(const fs::path& input, const fs::path&) {
+  read_euroc_csv(input);
+  read_euroc_csv(input, {TimeUnit::kSeconds, DuplicateStamps::kKeepFirst});
+}
+
+// As `eval` reads a file given without --format: detected, then read.
+void parse_detected(const fs::path& input, const fs::path&) {
+  read_trajectory(input, std::nullopt, {}, std::nullopt);
+}
+
 void parse_settings(const fs::path& input, const fs::path&) {
   Settings settings;
   read_settings_yaml(input, settings);
@@ -107,6 +134,9 @@ const std::vector<FuzzTarget>& fuzz_targets() {
       {"tum_list", parse_tum_list},
       {"association", parse_association},
       {"trajectory", parse_trajectory},
+      {"kitti", parse_kitti},
+      {"euroc", parse_euroc},
+      {"trajectory_format", parse_detected},
       {"settings", parse_settings},
       {"calibration", parse_calibration},
       {"png", parse_png},

@@ -1,0 +1,55 @@
+#include "io/euroc_csv.h"
+
+#include <charconv>
+
+#include "core/error.h"
+#include "io/line_reader.h"
+#include "io/pose_rows.h"
+
+namespace slamkit {
+
+std::optional<long long> parse_nanoseconds(std::string_view text, bool* overflow) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-') text.remove_prefix(1);
+  long long ns = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), ns);
+  const bool whole = end == text.data() + text.size() && !text.empty();
+  if (overflow) *overflow = whole && error == std::errc::result_out_of_range;
+  if (error != std::errc() || !whole) return std::nullopt;
+  return ns;
+}
+
+TrajectoryFile read_euroc_csv(const std::filesystem::path& path,
+                              const TrajectoryReadOptions& options) {
+  const std::string name = printable(path.string(), 4096);
+  require_file(path, name);
+  LineReader reader(path, name);
+  PoseRows rows(name);
+  std::string_view line;
+  while (reader.next(line)) {
+    const int number = reader.line_number();
+    if (skip_line(line, number)) continue;
+    std::string_view fields[8];
+    const size_t count = split_fields(line, fields, 8);
+    if (count < 8)
+      throw_input_error(name, number,
+                        "expected at least 8 fields 'timestamp [ns], p_x, p_y, p_z, q_w, q_x, "
+                        "q_y, q_z', found " +
+                            std::to_string(count));
+    bool overflow = false;
+    const auto ns = parse_nanoseconds(fields[0], &overflow);
+    if (!ns)
+      throw_input_error(name, number,
+                        "field 1 is " + std::string(overflow ? "beyond int64" : "not an integer") +
+                            ": '" + printable(fields[0]) +
+                            "' (EuRoC stamps are integer nanoseconds)");
+    double v[8];
+    for (size_t k = 1; k < 8; ++k) v[k] = parse_field(fields[k], k, name, number);
+    const long long per_second = 1000000000LL;
+    const double stamp = double(*ns / per_second) + double(*ns % per_second) / double(per_second);
+    rows.add(stamp, Eigen::Vector3d(v[1], v[2], v[3]),
+             Eigen::Quaterniond(v[4], v[5], v[6], v[7]), number);  // w first
+  }
+  return rows.finish(options.duplicates, "euroc");
+}
+
+}  // namespace slamkit

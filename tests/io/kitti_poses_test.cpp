@@ -1,0 +1,119 @@
+#include "io/kitti_poses.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/error.h"
+#include "support/test_data.h"
+
+namespace slamkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kIdentityAt123 = "1 0 0 1 0 1 0 2 0 0 1 3\n";
+const char* kQuarterTurnZ = "0 -1 0 4 1 0 0 5 0 0 1 6\n";  // 90 deg about z
+
+void expect_error(const fs::path& poses, const std::optional<fs::path>& times,
+                  const std::string& fragment) {
+  try {
+    read_kitti_poses(poses, times);
+    FAIL() << "no error for " << poses;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(KittiPoses, ReadsKnownPosesWithIndexStamps) {
+  const fs::path dir = test::temp_dir("kitti");
+  const TrajectoryFile f =
+      read_kitti_poses(write_text(dir, "p.txt", std::string(kIdentityAt123) + kQuarterTurnZ),
+                       std::nullopt);
+  ASSERT_EQ(f.trajectory.size(), 2u);
+  EXPECT_EQ(f.format, "kitti");
+  EXPECT_TRUE(f.warnings.empty());
+  EXPECT_EQ(f.trajectory.stamp(0), 0.0);
+  EXPECT_EQ(f.trajectory.stamp(1), 1.0);
+  EXPECT_EQ(f.trajectory.position(0), Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(f.trajectory.position(1), Eigen::Vector3d(4, 5, 6));
+  EXPECT_TRUE(f.trajectory.pose(0).linear().isIdentity(0));
+  Eigen::Matrix3d R;
+  R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  EXPECT_LT((f.trajectory.pose(1).linear() - R).norm(), 1e-15);
+  EXPECT_NEAR(std::abs(f.trajectory.orientation(1).w()), std::sqrt(0.5), 1e-15);
+}
+
+TEST(KittiPoses, TakesStampsFromTimesFile) {
+  const fs::path dir = test::temp_dir("kitti");
+  const fs::path poses = write_text(dir, "p.txt", std::string(kIdentityAt123) + kQuarterTurnZ);
+  const fs::path times = write_text(dir, "times.txt", "0.000000e+00\n1.036742e-01\n");
+  const TrajectoryFile f = read_kitti_poses(poses, times);
+  ASSERT_EQ(f.trajectory.size(), 2u);
+  EXPECT_EQ(f.trajectory.stamp(0), 0.0);
+  EXPECT_EQ(f.trajectory.stamp(1), 1.036742e-01);
+}
+
+TEST(KittiPoses, HostileFilesNameFileAndLine) {
+  const fs::path dir = test::temp_dir("kitti");
+  const std::string good = kIdentityAt123;
+  expect_error(write_text(dir, "short.txt", good + "1 0 0 1 0 1 0 2 0 0 1\n"), std::nullopt,
+               "short.txt:2: expected 12 fields");
+  expect_error(write_text(dir, "long.txt", "1 0 0 1 0 1 0 2 0 0 1 3 4\n"), std::nullopt,
+               "long.txt:1: expected 12 fields");
+  expect_error(write_text(dir, "word.txt", "1 0 0 x 0 1 0 2 0 0 1 3\n"), std::nullopt,
+               "word.txt:1: field 4 is not a number: 'x'");
+  expect_error(write_text(dir, "huge.txt", "1 0 0 1e200 0 1 0 2 0 0 1 3\n"), std::nullopt,
+               "huge.txt:1: field 4 is 1e200, beyond +-1e100");
+  expect_error(write_text(dir, "skew.txt", good + "1 0.1 0 1 0 1 0 2 0 0 1 3\n"), std::nullopt,
+               "skew.txt:2: fields 1-3, 5-7, 9-11 are not a rotation matrix");
+  expect_error(write_text(dir, "zero.txt", "0 0 0 1 0 0 0 2 0 0 0 3\n"), std::nullopt,
+               "zero.txt:1: fields 1-3, 5-7, 9-11 are not a rotation matrix");
+  expect_error(write_text(dir, "mirror.txt", "-1 0 0 1 0 1 0 2 0 0 1 3\n"), std::nullopt,
+               "mirror.txt:1: fields 1-3, 5-7, 9-11 are a reflection");
+  expect_error(write_text(dir, "empty.txt", "\n"), std::nullopt, "empty.txt: no valid pose");
+
+  const fs::path three = write_text(dir, "three.txt", good + good + good);
+  expect_error(three, write_text(dir, "t2.txt", "0\n1\n"), "three.txt:3: pose 3 has no stamp");
+  expect_error(three, write_text(dir, "t4.txt", "0\n1\n2\n3\n"),
+               "t4.txt:4: stamp 4 has no pose");
+  expect_error(three, write_text(dir, "tw.txt", "0\nx\n2\n"),
+               "tw.txt:2: field 1 is not a number: 'x'");
+  expect_error(three, write_text(dir, "t2f.txt", "0\n1 2\n2\n"),
+               "t2f.txt:2: expected 1 field");
+  expect_error(three, dir / "missing.txt", "missing.txt: file not found");
+}
+
+TEST(KittiPoses, SkipsNonFiniteAndHandlesUnsortedAndRepeatedStampsAsTum) {
+  const fs::path dir = test::temp_dir("kitti");
+  const std::string good = kIdentityAt123;
+  const fs::path poses =
+      write_text(dir, "p.txt", good + "1 0 0 nan 0 1 0 2 0 0 1 3\n" + good + good);
+  const TrajectoryFile f = read_kitti_poses(poses, write_text(dir, "t.txt", "2\n3\n1\n1\n"));
+  // Line 2 skipped, lines 3 and 4 share stamp 1 (the last kept), sorted before line 1.
+  ASSERT_EQ(f.trajectory.size(), 2u);
+  EXPECT_EQ(f.non_finite_lines_skipped, 1);
+  EXPECT_TRUE(f.was_unsorted);
+  EXPECT_EQ(f.duplicate_stamps_dropped, 1);
+  EXPECT_EQ(f.trajectory.stamp(0), 1.0);
+  EXPECT_EQ(f.trajectory.stamp(1), 2.0);
+  ASSERT_EQ(f.warnings.size(), 3u);
+  EXPECT_EQ(f.warnings[0].find(poses.string() + ":2: non-finite value"), 0u) << f.warnings[0];
+  EXPECT_NE(f.warnings[2].find("p.txt:3: duplicate timestamp, line replaced by line 4"),
+            std::string::npos)
+      << f.warnings[2];
+  // A NaN stamp skips its pose as well.
+  EXPECT_EQ(read_kitti_poses(poses, write_text(dir, "tn.txt", "nan\n3\n1\n0\n"))
+                .non_finite_lines_skipped,
+            2);
+}
+
+}  // namespace
+}  // namespace slamkit
