@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -13,11 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path;
-}
+using test::write_text;
 
 const std::string kHeader = "#timestamp [ns],p_x,p_y,p_z,q_w,q_x,q_y,q_z\n";
 

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -13,11 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path;
-}
+using test::write_text;
 
 const char* kIdentityAt123 = "1 0 0 1 0 1 0 2 0 0 1 3\n";
 const char* kQuarterTurnZ = "0 -1 0 4 1 0 0 5 0 0 1 6\n";  // 90 deg about z

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -12,11 +11,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path;
-}
+using test::write_text;
 
 TrajectoryFormat detect(const std::string& text) {
   return detect_trajectory_format(write_text(test::temp_dir("format"), "f.txt", text));

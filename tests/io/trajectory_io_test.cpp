@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <random>
 
 #include "core/error.h"
@@ -13,11 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_text(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path path = dir / name;
-  std::ofstream(path) << text;
-  return path;
-}
+using test::write_text;
 
 Trajectory random_trajectory(int n, unsigned seed) {
   std::mt19937 rng(seed);

@@ -32,6 +32,13 @@ std::string read_text(const std::filesystem::path& file) {
   return text.str();
 }
 
+std::filesystem::path write_text(const std::filesystem::path& dir, const std::string& name,
+                                 const std::string& text) {
+  const std::filesystem::path path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
 namespace {
 
 // The folders temp_dir handed to the running test.

@@ -17,6 +17,9 @@ bool running_under_ci();
 
 // The whole text of a file ("" when it cannot be read).
 std::string read_text(const std::filesystem::path& file);
+// Writes `text` to dir/name and returns that path.
+std::filesystem::path write_text(const std::filesystem::path& dir, const std::string& name,
+                                 const std::string& text);
 
 // The bytes of base64 text (RFC 4648; padding and other characters skipped): screenshots from
 // the browser, arrays embedded in report pages.
