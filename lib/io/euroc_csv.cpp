@@ -3,7 +3,6 @@
 #include <charconv>
 
 #include "core/error.h"
-#include "io/line_reader.h"
 #include "io/pose_rows.h"
 
 namespace slamkit {
@@ -21,13 +20,8 @@ std::optional<long long> parse_nanoseconds(std::string_view text, bool* overflow
 TrajectoryFile read_euroc_csv(const std::filesystem::path& path,
                               const TrajectoryReadOptions& options) {
   const std::string name = printable(path.string(), 4096);
-  require_file(path, name);
-  LineReader reader(path, name);
   PoseRows rows(name);
-  std::string_view line;
-  while (reader.next(line)) {
-    const int number = reader.line_number();
-    if (skip_line(line, number)) continue;
+  for_each_data_line(path, name, [&](std::string_view line, int number) {
     std::string_view fields[8];
     const size_t count = split_fields(line, fields, 8);
     if (count < 8)
@@ -44,11 +38,9 @@ TrajectoryFile read_euroc_csv(const std::filesystem::path& path,
                             "' (EuRoC stamps are integer nanoseconds)");
     double v[8];
     for (size_t k = 1; k < 8; ++k) v[k] = parse_field(fields[k], k, name, number);
-    const long long per_second = 1000000000LL;
-    const double stamp = double(*ns / per_second) + double(*ns % per_second) / double(per_second);
-    rows.add(stamp, Eigen::Vector3d(v[1], v[2], v[3]),
+    rows.add(seconds_from_ticks(*ns, 1000000000LL), Eigen::Vector3d(v[1], v[2], v[3]),
              Eigen::Quaterniond(v[4], v[5], v[6], v[7]), number);  // w first
-  }
+  });
   return rows.finish(options.duplicates, "euroc");
 }
 

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/error.h"
-#include "io/line_reader.h"
 #include "io/pose_rows.h"
 
 namespace slamkit {
@@ -21,13 +20,8 @@ struct Stamps {
 
 Stamps read_times(const std::filesystem::path& path, const TimeUnit unit) {
   const std::string name = printable(path.string(), 4096);
-  require_file(path, name);
-  LineReader reader(path, name);
   Stamps stamps;
-  std::string_view line;
-  while (reader.next(line)) {
-    const int number = reader.line_number();
-    if (skip_line(line, number)) continue;
+  for_each_data_line(path, name, [&](std::string_view line, int number) {
     std::string_view field;
     const size_t count = split_fields(line, &field, 1);
     if (count != 1)
@@ -38,7 +32,7 @@ Stamps read_times(const std::filesystem::path& path, const TimeUnit unit) {
                         "more than " + std::to_string(kMaxTrajectoryPoses) + " stamps");
     stamps.values.push_back(parse_field(field, 0, name, number, &unit));
     stamps.lines.push_back(number);
-  }
+  });
   return stamps;
 }
 
@@ -60,14 +54,9 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
   const Stamps stamps = times ? read_times(*times, options.time_unit) : Stamps{};
   const std::string times_name = times ? printable(times->string(), 4096) : "";
   const std::string name = printable(path.string(), 4096);
-  require_file(path, name);
-  LineReader reader(path, name);
   PoseRows rows(name);
   size_t index = 0;  // of the pose line, which its stamp shares
-  std::string_view line;
-  while (reader.next(line)) {
-    const int number = reader.line_number();
-    if (skip_line(line, number)) continue;
+  for_each_data_line(path, name, [&](std::string_view line, int number) {
     std::string_view fields[12];
     const size_t count = split_fields(line, fields, 12);
     if (count != 12)
@@ -85,14 +74,14 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
     if (!std::all_of(v, v + 12, [](double x) { return std::isfinite(x); }) ||
         !std::isfinite(stamp)) {
       rows.skip_non_finite(number);
-      continue;
+      return;
     }
     Eigen::Matrix3d R;
     R << v[0], v[1], v[2], v[4], v[5], v[6], v[8], v[9], v[10];
     if (const std::string problem = rotation_problem(R); !problem.empty())
       throw_input_error(name, number, problem);
     rows.add(stamp, Eigen::Vector3d(v[3], v[7], v[11]), Eigen::Quaterniond(R), number);
-  }
+  });
   if (times && index < stamps.values.size())
     throw_input_error(times_name, stamps.lines[index],
                       "stamp " + std::to_string(index + 1) + " has no pose: " + name +

@@ -56,10 +56,14 @@ std::optional<double> parse_stamp(std::string_view text, TimeUnit unit) {
   long long ticks = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), ticks);
   if (error == std::errc() && end == text.data() + text.size())
-    return double(ticks / per_second) + double(ticks % per_second) / double(per_second);
+    return seconds_from_ticks(ticks, per_second);
   const auto value = parse_double(text);
   if (!value) return std::nullopt;
   return *value / double(per_second);
+}
+
+double seconds_from_ticks(long long ticks, long long per_second) {
+  return double(ticks / per_second) + double(ticks % per_second) / double(per_second);
 }
 
 double parse_field(std::string_view text, size_t index, const std::string& name, int line,

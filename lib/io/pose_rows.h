@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/line_reader.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit {
@@ -23,6 +24,9 @@ std::optional<double> parse_double(std::string_view text);
 // A stamp in `unit` converted to seconds; integer stamps (the usual ns/us form) exactly.
 std::optional<double> parse_stamp(std::string_view text, TimeUnit unit);
 
+// An integer count of ticks (per_second a second) in seconds, exactly where a double can be.
+double seconds_from_ticks(long long ticks, long long per_second);
+
 // Field `index` (from 0) of line `line` as a number (a stamp in `unit` for index 0 when
 // `unit` is given). InputError naming file and line when it is not wholly a number or is
 // beyond kMaxTrajectoryValue.
@@ -35,6 +39,21 @@ void require_file(const std::filesystem::path& path, const std::string& name);
 // True for lines that hold no data: blank, '#' comments. Strips a UTF-8 byte order mark from
 // line 1 first (as evo does).
 bool skip_line(std::string_view& line, int number);
+
+// Calls on_line(line, number) for each data line of the file at `path` (named `name` in
+// messages), after checking it is a file. A template, not a std::function: it runs for each of
+// up to millions of lines.
+template <typename OnLine>
+void for_each_data_line(const std::filesystem::path& path, const std::string& name,
+                        OnLine&& on_line) {
+  require_file(path, name);
+  LineReader reader(path, name);
+  std::string_view line;
+  while (reader.next(line)) {
+    const int number = reader.line_number();
+    if (!skip_line(line, number)) on_line(line, number);
+  }
+}
 
 // Poses in file order, with the line each came from.
 class PoseRows {

@@ -7,7 +7,6 @@
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
-#include "io/line_reader.h"
 #include "io/pose_rows.h"
 
 namespace slamkit {
@@ -15,13 +14,8 @@ namespace slamkit {
 TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
                                    const TrajectoryReadOptions& options) {
   const std::string name = printable(path.string(), 4096);
-  require_file(path, name);
-  LineReader reader(path, name);
   PoseRows rows(name);
-  std::string_view line;
-  while (reader.next(line)) {
-    const int number = reader.line_number();
-    if (skip_line(line, number)) continue;
+  for_each_data_line(path, name, [&](std::string_view line, int number) {
     std::string_view fields[8];
     const size_t count = split_fields(line, fields, 8);
     if (count != 8)
@@ -33,7 +27,7 @@ TrajectoryFile read_tum_trajectory(const std::filesystem::path& path,
       values[k] = parse_field(fields[k], k, name, number, k == 0 ? &options.time_unit : nullptr);
     rows.add(values[0], Eigen::Vector3d(values[1], values[2], values[3]),
              Eigen::Quaterniond(values[7], values[4], values[5], values[6]), number);
-  }
+  });
   return rows.finish(options.duplicates, "tum");
 }
 
