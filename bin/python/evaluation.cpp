@@ -79,6 +79,22 @@ const std::map<std::string, Option>& option_table() {
         [](auto& a, auto v) {
           a.time_unit = member(v, "time_unit", {"s", "us", "ns"});
         }}},
+      {"format",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.format = member(v, "format", {"tum", "kitti", "euroc"});
+        }}},
+      {"gt_format",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.gt_format = member(v, "gt_format", {"tum", "kitti", "euroc"});
+        }}},
+      {"est_format",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.est_format = member(v, "est_format", {"tum", "kitti", "euroc"});
+        }}},
+      {"times", {kCommon, [](auto& a, auto v) { a.kitti_times = text(v); }}},
       {"out", {kCommon, [](auto& a, auto v) { a.out_dir = text(v); }}},
       {"json", {kCommon, [](auto& a, auto v) { a.json_path = text(v); }}},
       {"plot", {kCommon, [](auto& a, auto v) { a.plot_dir = text(v); }}},

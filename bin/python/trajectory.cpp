@@ -1,9 +1,11 @@
-// slamkit.Trajectory and its files: read_trajectory() reads TUM files with the reader of
-// `slamkit eval`, Trajectory.write() writes them as `slamkit` does (aligned.txt, trajectory.txt).
+// slamkit.Trajectory and its files: read_trajectory() reads TUM, KITTI and EuRoC files with the
+// readers of `slamkit eval`, Trajectory.write() writes TUM files as `slamkit` does (aligned.txt,
+// trajectory.txt).
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include "bin/python/bindings.h"
+#include "io/trajectory_format.h"
 #include "bin/python/trajectory_arrays.h"
 
 namespace slamkit::python {
@@ -58,17 +60,22 @@ void bind_trajectory(py::module_& m) {
 
   m.def(
       "read_trajectory",
-      [](const std::filesystem::path& path, const std::string& time_unit,
+      [](const std::filesystem::path& path, const std::optional<std::string>& format,
+         const std::optional<std::filesystem::path>& times, const std::string& time_unit,
          const std::string& duplicate_stamps) {
         TrajectoryReadOptions options;
         options.time_unit = parse_time_unit(time_unit);
         options.duplicates = parse_duplicate_stamps(duplicate_stamps);
+        const std::optional<TrajectoryFormat> chosen =
+            format ? std::optional(parse_trajectory_format(*format)) : std::nullopt;
         py::gil_scoped_release release;
-        return std::make_shared<TrajectoryFile>(read_tum_trajectory(path, options));
+        return std::make_shared<TrajectoryFile>(read_trajectory(path, chosen, options, times));
       },
-      "path"_a, py::kw_only(), "time_unit"_a = "s", "duplicate_stamps"_a = "last",
-      "Reads a TUM trajectory (timestamp tx ty tz qx qy qz qw) as `slamkit eval` does; "
-      "ValueError naming file and line for what the CLI refuses.");
+      "path"_a, py::kw_only(), "format"_a = py::none(), "times"_a = py::none(),
+      "time_unit"_a = "s", "duplicate_stamps"_a = "last",
+      "Reads a trajectory as `slamkit eval` does: format 'tum', 'kitti' or 'euroc' (None: "
+      "detected from the content), times= a KITTI times.txt; ValueError naming file and line "
+      "for what the CLI refuses.");
 }
 
 }  // namespace slamkit::python

@@ -88,6 +88,20 @@ def test_evaluate_gives_both():
     assert result.metrics["rpe"]["convention"] == "evo"
 
 
+def test_format_options_read_kitti_files(tmp_path):
+    gt = groundtruth(50)
+    poses = tmp_path / "est.txt"
+    np.savetxt(poses, moved(gt, R, T).poses[:, :3, :].reshape(-1, 12), fmt="%.17g")
+    times = tmp_path / "times.txt"
+    np.savetxt(times, gt.stamps, fmt="%.17g")
+    r = slamkit.ate(gt, poses, est_format="kitti", times=times)
+    assert r.metrics["ate"]["pairs"] == 50
+    assert r.metrics["ate"]["rmse"] < 1e-9
+    assert r.metrics["inputs"]["estimate"]["format"] == "kitti"
+    with pytest.raises(ValueError, match="est_format: 'ply' is not one of tum, kitti, euroc"):
+        slamkit.ate(gt, poses, est_format="ply")
+
+
 def test_associate_pairs_within_the_tolerance():
     gt = groundtruth()
     est = moved(gt, R, T, stamp_shift=0.015)

@@ -92,6 +92,31 @@ def test_read_options_and_warnings(tmp_path):
         slamkit.read_trajectory(path, time_unit="h")
 
 
+def test_kitti_and_euroc_files_read_as_the_tum_file_of_the_same_poses(tmp_path):
+    stamps, positions, quaternions = helix(20)
+    t = slamkit.Trajectory(stamps, positions=positions, quaternions=quaternions)
+    kitti = tmp_path / "poses.txt"
+    np.savetxt(kitti, t.poses[:, :3, :].reshape(-1, 12), fmt="%.17g")
+    times = tmp_path / "times.txt"
+    np.savetxt(times, stamps, fmt="%.17g")
+    euroc = tmp_path / "data.csv"
+    rows = np.column_stack([np.round(stamps * 1e9).astype(np.int64), positions,
+                            quaternions[:, [3, 0, 1, 2]]])  # w first
+    with open(euroc, "w") as f:
+        f.write("#timestamp [ns],p_x,p_y,p_z,q_w,q_x,q_y,q_z\n")
+        for r in rows:
+            f.write("%d," % r[0] + ",".join("%.17g" % v for v in r[1:]) + "\n")
+    for read in [slamkit.read_trajectory(kitti, times=times),  # detected: 12 fields
+                 slamkit.read_trajectory(kitti, format="kitti", times=times),
+                 slamkit.read_trajectory(euroc)]:  # detected: the header
+        np.testing.assert_allclose(read.stamps, stamps, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(read.poses, t.poses, rtol=0, atol=1e-12)
+    by_index = slamkit.read_trajectory(kitti)
+    np.testing.assert_array_equal(by_index.stamps, np.arange(20))
+    with pytest.raises(ValueError, match="unknown trajectory format 'ply'"):
+        slamkit.read_trajectory(kitti, format="ply")
+
+
 def test_bad_file_raises_value_error_with_file_and_line(tmp_path):
     path = tmp_path / "bad.txt"
     path.write_text("# header\n1 0 0 0 0 0 0 1\n2 0 0 zero 0 0 0 1\n")
