@@ -323,14 +323,11 @@ void run_kitti_evaluation(EvaluationRequest& a) {
   }
   const KittiOdometryResult kitti = compute_kitti_odometry(gt, est);
   if (kitti.segments.empty()) {
-    double path = 0;
-    for (size_t k = 1; k < gt.size(); ++k)
-      path += (gt[k].translation() - gt[k - 1].translation()).norm();
     char text[200];
     std::snprintf(text, sizeof text,
                   "groundtruth path over the %zu matched frames is %.3f m: the KITTI metric's "
                   "shortest segment needs more than 100 m",
-                  gt.size(), path);
+                  gt.size(), kitti.path_m);
     throw_input_error(a.gt, text);
   }
   json update = common_json(a, in);

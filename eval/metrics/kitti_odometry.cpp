@@ -39,6 +39,7 @@ KittiOdometryResult compute_kitti_odometry(const std::vector<Eigen::Isometry3d>&
                                            const std::vector<Eigen::Isometry3d>& est) {
   KittiOdometryResult result;
   const std::vector<double> distance = path_distances(gt);
+  if (!distance.empty()) result.path_m = distance.back();
   for (size_t first = 0; first < gt.size(); first += kStep) {
     for (double length : kLengths) {
       const auto last = segment_end(distance, first, length);

@@ -26,6 +26,7 @@ struct KittiOdometryResult {
   std::vector<KittiLengthError> lengths;  // only lengths with at least one segment
   double trans_pct = 0;                   // mean over every segment (the devkit's stats.txt)
   double rot_deg_per_m = 0;
+  double path_m = 0;  // the groundtruth's whole path
 };
 
 // `gt` and `est` are the same frames in order (poses T_w_c). For first frames 0, 10, 20, ...

@@ -67,6 +67,8 @@ TEST(KittiOdometry, ExactEstimateHasNoErrorAndShortPathsNoSegment) {
       compute_kitti_odometry(straight_line(101, 1.0), straight_line(101, 1.0));
   EXPECT_TRUE(short_path.segments.empty());
   EXPECT_TRUE(short_path.lengths.empty());
+  EXPECT_EQ(short_path.path_m, 100.0);
+  EXPECT_EQ(exact.path_m, 999.0);
 }
 
 }  // namespace
