@@ -49,40 +49,56 @@ scratch_base="${TMPDIR:-/tmp}"
 scratch="$(mktemp -d "$scratch_base/slamkit_fuzz.XXXXXX")"
 trap 'rm -rf "$scratch"' EXIT
 
-found=0
-for target in "${targets[@]}"; do
-  corpus="$build_dir/corpus/$target"
-  findings="$build_dir/findings/$target"
-  seeds="$build_dir/seeds/$target"
-  mkdir -p "$corpus" "$findings"
+# One target: fuzz it, move its findings into tests/fuzz_regressions/<target>/, and leave its
+# summary line and finding count in the scratch folder.
+fuzz_target() {
+  local target="$1"
+  local corpus="$build_dir/corpus/$target" findings="$build_dir/findings/$target"
+  local seeds="$build_dir/seeds/$target" fuzz_log="$build_dir/fuzz-$target.log"
+  local temporary="$scratch/$target" status=0 new=0 runs artifact
+  mkdir -p "$corpus" "$findings" "$temporary"
   rm -rf "$seeds"
   gather_seeds "$target" "$seeds"
-  inputs=("$corpus" "$seeds")
+  local -a inputs=("$corpus" "$seeds")
   [[ -d "$root/tests/fuzz/seeds/$target" ]] && inputs+=("$root/tests/fuzz/seeds/$target")
-  fuzz_log="$build_dir/fuzz-$target.log"
   # -timeout: a single input taking 10 s is a hang; -rss_limit_mb also caps any one allocation.
-  status=0
-  TMPDIR="$scratch" "$build_dir/tests/fuzz/${target}_fuzzer" \
+  TMPDIR="$temporary" "$build_dir/tests/fuzz/${target}_fuzzer" \
     -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
     -dict="$root/tests/fuzz/dict/$target.dict" -artifact_prefix="$findings/" \
     -print_final_stats=1 "${inputs[@]}" \
     >"$fuzz_log" 2>&1 || status=$?
   runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$fuzz_log" | tail -n 1)"
-  new=0
-  for artifact in "$findings"/*; do
-    [[ -e "$artifact" ]] || continue
-    mkdir -p "$root/tests/fuzz_regressions/$target"
-    cp "$artifact" "$root/tests/fuzz_regressions/$target/"
-    rm "$artifact"
-    echo "fuzz: $target: FINDING $(basename "$artifact") -> tests/fuzz_regressions/$target/"
-    new=$((new + 1))
-  done
-  if ((status != 0 && new == 0)); then
-    echo "fuzz: $target: the fuzzer failed (exit $status) without a finding; see $fuzz_log" >&2
-    new=1
-  fi
-  found=$((found + new))
-  echo "fuzz: $target: ${seconds} s, ${runs:-0} executions, $(ls "$corpus" | wc -l) corpus inputs, $new finding(s)"
+  {
+    for artifact in "$findings"/*; do
+      [[ -e "$artifact" ]] || continue
+      mkdir -p "$root/tests/fuzz_regressions/$target"
+      cp "$artifact" "$root/tests/fuzz_regressions/$target/"
+      rm "$artifact"
+      echo "fuzz: $target: FINDING $(basename "$artifact") -> tests/fuzz_regressions/$target/"
+      new=$((new + 1))
+    done
+    if ((status != 0 && new == 0)); then
+      echo "fuzz: $target: the fuzzer failed (exit $status) without a finding; see $fuzz_log"
+      new=1
+    fi
+    echo "fuzz: $target: ${seconds} s, ${runs:-0} executions, $(ls "$corpus" | wc -l) corpus" \
+      "inputs, $new finding(s)"
+  } >"$scratch/$target.summary"
+  echo "$new" >"$scratch/$target.found"
+}
+
+# The targets run side by side, one per core: each fuzzer is one process, and CI's time is
+# what they add up to.
+jobs_at_once="$(nproc)"
+for target in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= jobs_at_once)); do wait -n || true; done
+  fuzz_target "$target" &
+done
+wait
+found=0
+for target in "${targets[@]}"; do
+  cat "$scratch/$target.summary"
+  found=$((found + $(cat "$scratch/$target.found")))
 done
 
 if ((found > 0)); then
