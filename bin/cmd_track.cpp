@@ -1,17 +1,14 @@
 // slamkit track SEQ --out DIR: the front end over a whole sequence (features, matching and
 // pose, keyframes: docs/method.md), without the back end's bundle adjustments and map
 // (`slamkit run` runs everything).
-#include <cstdio>
 #include <limits>
 #include <memory>
 
 #include "bin/command.h"
 #include "bin/output_folder.h"
-#include "bin/run_summary.h"
+#include "bin/run_job.h"
 #include "bin/sequence_options.h"
-#include "eval/run/run_evaluation.h"
 #include "settings/settings_yaml.h"
-#include "pipeline/run_output.h"
 #include "pipeline/run_pipeline.h"
 
 namespace slamkit::cli {
@@ -37,23 +34,12 @@ void track(const TrackArgs& args) {
   if (args.threads >= 0) settings.pipeline.threads = args.threads;
   if (args.lost_frames) settings.pipeline.lost_frames = *args.lost_frames;
   if (!args.evaluate) settings.pipeline.evaluate = false;
-  settings = front_end_only(settings);
   const TumSequence seq = TumSequence::open(args.folder, args.sequence);
-
-  fill_run_folder(begin_run_folder(args.out, settings), [&] {
-    RunResult result;
-    {
-      StageProgress progress;
-      result = track_sequence(seq, settings, std::ref(progress));
-    }
-    const std::string name = seq.folder().filename().string();
-    write_run_outputs(args.out, name, seq.camera(), settings, result);
-    write_timing_json(args.out, name, result);
-    print_tracking_summary(seq, result);
-    std::printf("output      %s\n", args.out.c_str());
-    if (settings.pipeline.evaluate) eval::evaluate_run_folder(seq, args.out, args.plot);
-    return result.seconds;
-  });
+  RunJob job;
+  job.settings = front_end_only(settings);
+  job.back_end = false;
+  job.plot = args.plot;
+  run_into_folder(seq, args.out, job);
 }
 
 const bool kRegistered = register_command([](CLI::App& root) {

@@ -10,13 +10,15 @@
 namespace slamkit::cli {
 
 void write_report_page(const std::vector<std::filesystem::path>& runs,
-                       const std::filesystem::path& out, const ReportSettings& budgets) {
+                       const std::filesystem::path& out, const ReportSettings& budgets,
+                       bool quiet) {
   Stopwatch watch;
   eval::ReportOptions options;
   options.point_budget = size_t(budgets.point_budget);
   options.mesh_triangle_budget = size_t(budgets.mesh_triangle_budget);
   options.generator = std::string("slamkit ") + kVersion + " (" + kCommit + ")";
   const eval::ReportSummary summary = eval::write_report(runs, out, options);
+  if (quiet) return;
   for (const std::string& note : summary.notes) std::fprintf(stderr, "report: %s\n", note.c_str());
   std::string mesh;
   if (summary.mesh_triangles > 0)

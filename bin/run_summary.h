@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/progress.h"
+#include "core/settings/settings.h"
 #include "io/tum_sequence.h"
 #include "pipeline/batch_engine.h"
 
@@ -14,6 +15,11 @@ namespace slamkit::cli {
 
 // Frames, keyframes, lost frames and why, solvers, speed.
 void print_tracking_summary(const TumSequence& sequence, const RunResult& result);
+
+// The back end's stages (map, local and global BA, loops, refinement, fusion), ATE as tracked
+// and after the back end, stage times, CPU and peak memory.
+void print_back_end_summary(const TumSequence& sequence, const Settings& settings,
+                            const RunResult& result);
 
 // One progress bar per stage, drawn on stderr as the stages report.
 class StageProgress {

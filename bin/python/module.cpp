@@ -7,11 +7,12 @@
 
 PYBIND11_MODULE(slamkit, m) {
   m.doc() =
-      "slamkit: trajectories, their evaluation (ATE, RPE) and RGB-D sequences, as the slamkit CLI "
-      "has them";
+      "slamkit: trajectories, their evaluation (ATE, RPE), RGB-D sequences and runs of the "
+      "pipeline, as the slamkit CLI has them";
   pybind11::register_exception<slamkit::InputError>(m, "InputError", PyExc_ValueError);
   slamkit::python::bind_trajectory(m);
   slamkit::python::bind_evaluation(m);
   slamkit::python::bind_sequence(m);
   slamkit::python::bind_settings(m);
+  slamkit::python::bind_run(m);
 }

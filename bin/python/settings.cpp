@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bin/python/bindings.h"
+#include "bin/python/settings_from_python.h"
 #include "core/error.h"
 #include "settings/settings_yaml.h"
 
@@ -60,7 +61,9 @@ py::object to_python(const YAML::Node& node) {
   return out;
 }
 
-Settings read_settings(const py::object& given) {
+}  // namespace
+
+Settings settings_from_python(const py::object& given) {
   Settings settings;
   if (given.is_none()) return settings;
   if (py::isinstance<py::dict>(given)) {
@@ -73,13 +76,11 @@ Settings read_settings(const py::object& given) {
   return settings;
 }
 
-}  // namespace
-
 void bind_settings(py::module_& m) {
   m.def(
       "settings",
       [](const py::object& given) {
-        return to_python(YAML::Load(settings_yaml_text(read_settings(given))));
+        return to_python(YAML::Load(settings_yaml_text(settings_from_python(given))));
       },
       "settings"_a = py::none(),
       "Every setting of the pipeline as a nested dict ({'orb': {'num_features': 1000, ...}, "
@@ -89,7 +90,7 @@ void bind_settings(py::module_& m) {
   m.def(
       "write_settings",
       [](const py::object& settings, const std::filesystem::path& path) {
-        write_settings_yaml(path, read_settings(settings));
+        write_settings_yaml(path, settings_from_python(settings));
       },
       "settings"_a, "path"_a,
       "Writes the settings (a dict or a YAML path, as settings() takes) as a complete YAML "

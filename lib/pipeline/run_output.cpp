@@ -65,11 +65,6 @@ void write_mapping_csv(std::ostream& out, const RunResult& result) {
   }
 }
 
-nlohmann::json stage_seconds_json(const StageTimes& t) {
-  return {{"prepare", t.prepare}, {"track", t.track},         {"local_ba", t.local_ba},
-          {"loops", t.loops},     {"global_ba", t.global_ba}, {"refine", t.refine},
-          {"fusion", t.fusion},   {"write", t.write},         {"total", t.total}};
-}
 
 // The stamps and the measured relative pose (the candidate in the keyframe's frame, for the
 // verified rows) let the evaluator judge each loop against groundtruth (eval/loop_accuracy.h).
@@ -144,19 +139,27 @@ void copy_text(char* to, size_t capacity, const std::string& text) {
 
 }  // namespace
 
-RunStart begin_run_folder(const fs::path& dir, const Settings& settings) {
+nlohmann::json stage_seconds_json(const StageTimes& t) {
+  return {{"prepare", t.prepare}, {"track", t.track},         {"local_ba", t.local_ba},
+          {"loops", t.loops},     {"global_ba", t.global_ba}, {"refine", t.refine},
+          {"fusion", t.fusion},   {"write", t.write},         {"total", t.total}};
+}
+
+RunStart begin_run_folder(const fs::path& dir, const Settings& settings, OnSignal on_signal) {
   fs::create_directories(dir);
   RunStart run{dir, fnv1a64_hex(settings_yaml_text(settings)), utc_now_iso()};
   std::string text = status_json(run, "interrupted").dump(2);
   text.erase(text.find_last_not_of("}\n") + 1);  // reopened for the signal number
   text += ",\n  \"signal\": ";
   const fs::path path = dir / "run.json";
-  if (text.size() < sizeof g_interrupted_text && path.string().size() + 4 < sizeof g_status_path) {
+  if (on_signal == OnSignal::kEndProcess && text.size() < sizeof g_interrupted_text &&
+      path.string().size() + 4 < sizeof g_status_path) {
     copy_text(g_interrupted_text, sizeof g_interrupted_text, text);
     g_interrupted_length = text.size();
     copy_text(g_status_path, sizeof g_status_path, path.string());
     copy_text(g_status_temporary, sizeof g_status_temporary, path.string() + ".tmp");
     set_interrupt_handler(on_interrupt);
+    run.handles_signals = true;
   }
   write_file_atomically(
       path, [&](std::ostream& out) { out << status_json(run, "running").dump(2) << "\n"; });
@@ -164,7 +167,8 @@ RunStart begin_run_folder(const fs::path& dir, const Settings& settings) {
 }
 
 void write_run_status(const RunStart& run, const StageTimes& t) {
-  set_interrupt_handler(SIG_DFL);  // complete now: an interrupt no longer marks the folder
+  // Complete now: an interrupt no longer marks the folder.
+  if (run.handles_signals) set_interrupt_handler(SIG_DFL);
   nlohmann::json json = status_json(run, "complete");
   json["ended"] = utc_now_iso();
   json["seconds"] = stage_seconds_json(t);
@@ -177,10 +181,15 @@ void fill_run_folder(const RunStart& run, const std::function<StageTimes()>& wor
   try {
     seconds = work();
   } catch (const std::exception& e) {
-    set_interrupt_handler(SIG_DFL);
-    nlohmann::json json = status_json(run, "failed");
-    json["ended"] = utc_now_iso();
-    json["error"] = e.what();
+    if (run.handles_signals) set_interrupt_handler(SIG_DFL);
+    const auto* interrupted = dynamic_cast<const RunInterrupted*>(&e);
+    nlohmann::json json = status_json(run, interrupted ? "interrupted" : "failed");
+    if (interrupted) {
+      json["signal"] = interrupted->signal;
+    } else {
+      json["ended"] = utc_now_iso();
+      json["error"] = e.what();
+    }
     write_file_atomically(run.dir / "run.json",
                           [&](std::ostream& out) { out << json.dump(2) << "\n"; });
     throw;

@@ -5,6 +5,8 @@
 // poses before its corrections reached the frames).
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "core/camera.h"
@@ -20,21 +22,39 @@ void write_timing_json(const std::filesystem::path& dir, const std::string& sequ
                        const RunResult& result);
 
 // run.json, what readers check before trusting a run folder. begin_run_folder creates the
-// folder and writes it with status "running"; until write_run_status, SIGINT or SIGTERM
-// removes any half-written output, rewrites it as "interrupted" and ends the process with
-// 128 + signal. write_run_status, called after every other file, writes "complete": version,
-// settings hash (FNV-1a 64 of settings.yaml's text), start and end (UTC), stage seconds.
+// folder and writes it with status "running"; with kEndProcess, until write_run_status, SIGINT
+// or SIGTERM removes any half-written output, rewrites it as "interrupted" and ends the process
+// with 128 + signal (the CLI). kRaise leaves signals to the caller, which stops the work by
+// throwing RunInterrupted (the Python module, where Ctrl-C must not end the interpreter).
+// write_run_status, called after every other file, writes "complete": version, settings hash
+// (FNV-1a 64 of settings.yaml's text), start and end (UTC), stage seconds.
 struct RunStart {
   std::filesystem::path dir;
   std::string settings_hash;
   std::string started;
+  bool handles_signals = false;  // this folder's handler is installed (kEndProcess)
 };
-RunStart begin_run_folder(const std::filesystem::path& dir, const Settings& settings);
+enum class OnSignal { kEndProcess, kRaise };
+RunStart begin_run_folder(const std::filesystem::path& dir, const Settings& settings,
+                          OnSignal on_signal = OnSignal::kEndProcess);
 void write_run_status(const RunStart& run, const StageTimes& seconds);
+
+// Thrown through a run to stop it on a signal the caller caught.
+struct RunInterrupted : std::runtime_error {
+  explicit RunInterrupted(int signal_number)
+      : std::runtime_error("interrupted by signal " + std::to_string(signal_number)),
+        signal(signal_number) {}
+  int signal;
+};
+
 // Calls work(), which writes the folder's other files and returns the stage times, then
 // write_run_status. When work throws (a frame that cannot be read), run.json says "failed" with
-// the message, which readers refuse as they refuse an interrupted run, and the exception goes on.
+// the message, which readers refuse as they refuse an interrupted run, and the exception goes on;
+// RunInterrupted makes it "interrupted" with the signal, as the CLI's handler writes it.
 void fill_run_folder(const RunStart& run, const std::function<StageTimes()>& work);
+
+// {"prepare": s, "track": s, ...}: the stage times as run.json holds them.
+nlohmann::json stage_seconds_json(const StageTimes& seconds);
 
 // Per-stage statistics of a run, as written to timing.json.
 struct StageStats {
