@@ -23,3 +23,4 @@ if ! { CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD
   echo "sanitizer build: failed; full log in $log" >&2
   exit 1
 fi
+echo "sanitizer build: $* built in $SECONDS s"

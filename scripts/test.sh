@@ -29,8 +29,16 @@ else
   # ctest runs each test in its own folder: a relative path would find no data there.
   export SLAMKIT_DATA="$(realpath -m -- "$SLAMKIT_DATA")"
 fi
-ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" "$@"
+# Each phase says how long it took, so that a slow CI shows where its time went.
+phase() {
+  local name="$1" start=$SECONDS
+  shift
+  "$@"
+  echo "test: $name took $((SECONDS - start)) s"
+}
+phase "ctest" ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" "$@"
 if $ci; then
-  "$root/scripts/sanitize.sh"
-  "$root/scripts/fuzz.sh" "${SLAMKIT_CI_FUZZ_SECONDS:-15}"
+  phase "the sanitizer build and its unit tests" "$root/scripts/sanitize.sh"
+  phase "the fuzz pass" "$root/scripts/fuzz.sh" "${SLAMKIT_CI_FUZZ_SECONDS:-15}"
 fi
+echo "test: all passed in $SECONDS s"

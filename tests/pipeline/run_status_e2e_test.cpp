@@ -60,6 +60,27 @@ TEST(RunStatus, RunJsonIsRunningWhileTheRunGoesAndCompleteAfterEveryOtherFile) {
   EXPECT_NO_THROW(eval::require_complete_run(dir));
 }
 
+// The Python module's way: signals stay the caller's, and a RunInterrupted thrown through the
+// work marks the folder as the CLI's handler does.
+TEST(RunStatus, RunInterruptedThrownThroughTheWorkMarksTheFolderAndLeavesSignalsAlone) {
+  const fs::path dir = test::temp_dir("run_status_raise") / "run";
+  struct sigaction before {};
+  sigaction(SIGINT, nullptr, &before);
+  const RunStart started = begin_run_folder(dir, Settings{}, OnSignal::kRaise);
+  EXPECT_FALSE(started.handles_signals);
+  EXPECT_THROW(fill_run_folder(started, []() -> StageTimes { throw RunInterrupted(SIGINT); }),
+               RunInterrupted);
+  struct sigaction after {};
+  sigaction(SIGINT, nullptr, &after);
+  EXPECT_EQ(after.sa_handler, before.sa_handler);
+  const nlohmann::json status = read_json(dir / "run.json");
+  EXPECT_EQ(status["status"], "interrupted");
+  EXPECT_EQ(status["signal"], SIGINT);
+  EXPECT_EQ(status["settings_hash"], started.settings_hash);
+  EXPECT_THROW(eval::require_complete_run(dir), InputError);
+  EXPECT_TRUE(temporaries(dir).empty());
+}
+
 // A view of `sequence` in `view`: its lists and files copied, its images linked, except
 // `blocked_image` (a path relative to the folder), which is a named pipe: reading that frame
 // waits for a writer, so a run stops there for as long as the test wants.
