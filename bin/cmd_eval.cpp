@@ -17,6 +17,7 @@
 #include "eval/evaluation_run.h"
 #include "eval/metrics/metrics_json.h"
 #include "eval/plotting.h"
+#include "eval/results_table.h"
 #include "eval/metrics/rpe.h"
 #include "eval/metrics/summary.h"
 #include "io/trajectory_io.h"
@@ -132,6 +133,7 @@ void run_compare(const CompareArgs& args) {
   const fs::path out(args.out_dir);
   eval::write_comparison_markdown(out / "comparison.md", runs);
   eval::write_comparison_csv(out / "comparison.csv", runs);
+  eval::write_results_tables(out, runs);
   if (!args.quiet) {
     std::ifstream table(out / "comparison.md");
     std::cout << table.rdbuf();
