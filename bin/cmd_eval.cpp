@@ -38,10 +38,25 @@ void evaluate_or_exit(eval::EvaluationRequest& request, bool do_ate, bool do_rpe
 struct CompareArgs {
   std::vector<std::string> runs;
   std::string out_dir;
+  std::vector<std::string> plot_formats;
   bool pdf = false;
+  int dpi = 0;
   std::string title;
   bool quiet = false;
 };
+
+// The options of every command that draws figures: which files, and the PNG's resolution.
+void add_figure_options(CLI::App* cmd, std::vector<std::string>& formats, bool& pdf, int& dpi) {
+  // One value per --plot-format, so that a list cannot swallow the positional arguments after it.
+  cmd->add_option("--plot-format", formats,
+                  "Figure files: png, svg or pdf, repeated or comma-separated (default: png,svg)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember({"png", "svg", "pdf"}));
+  cmd->add_flag("--pdf", pdf, "Also write PDF figures (with the default: png, svg and pdf)");
+  cmd->add_option("--dpi", dpi, "Resolution of PNG figures in dots per inch (default 200)")
+      ->check(CLI::Range(10, 2400));
+}
 
 void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (tum, kitti or euroc)")
@@ -83,7 +98,7 @@ void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--json", a.json_path, "metrics.json path (merged into if it exists)");
   cmd->add_option("--plot", a.plot_dir, "Draw plots into this folder (error if impossible)");
   cmd->add_flag("--no-plot", a.no_plot, "Do not draw plots into --out");
-  cmd->add_flag("--pdf", a.pdf, "Also write PDF plots");
+  add_figure_options(cmd, a.plot_formats, a.pdf, a.dpi);
   cmd->add_option("--title", a.title, "Sequence name for titles (default: groundtruth folder)");
   cmd->add_option("--system-name", a.system_name,
                   "System name for titles (default: estimate file name)");
@@ -138,12 +153,10 @@ void run_compare(const CompareArgs& args) {
     std::ifstream table(out / "comparison.md");
     std::cout << table.rdbuf();
   }
-  json figure = {{"figure", "compare"},
-                 {"out", out.string()},
-                 {"title", args.title},
-                 {"pdf", args.pdf},
-                 {"runs", json::array()}};
+  json figure = {
+      {"figure", "compare"}, {"out", out.string()}, {"title", args.title}, {"runs", json::array()}};
   for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
+  figure.update(eval::figure_files(args.plot_formats, args.pdf, args.dpi));
   const eval::PlotOutcome plot = eval::draw_figures(json::array({figure}));
   if (plot.python_missing) {
     std::cerr << "slamkit: note: no comparison plot drawn: " << plot.problem
@@ -208,7 +221,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmp_cmd->add_option("runs", cmp->runs, "Run folders")->required();
   cmp_cmd->add_option("--out", cmp->out_dir, "Output folder")->required();
   cmp_cmd->add_option("--title", cmp->title, "Plot title (default: the runs' sequence)");
-  cmp_cmd->add_flag("--pdf", cmp->pdf, "Also write a PDF plot");
+  add_figure_options(cmp_cmd, cmp->plot_formats, cmp->pdf, cmp->dpi);
   cmp_cmd->add_flag("--quiet", cmp->quiet, "Print nothing");
   cmp_cmd->callback([cmp] { run_compare(*cmp); });
 });
