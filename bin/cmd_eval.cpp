@@ -41,6 +41,8 @@ struct CompareArgs {
   std::vector<std::string> plot_formats;
   bool pdf = false;
   int dpi = 0;
+  bool trajectories = false;
+  std::string planes = "xy";
   std::string title;
   bool quiet = false;
 };
@@ -56,6 +58,17 @@ void add_figure_options(CLI::App* cmd, std::vector<std::string>& formats, bool& 
   cmd->add_flag("--pdf", pdf, "Also write PDF figures (with the default: png, svg and pdf)");
   cmd->add_option("--dpi", dpi, "Resolution of PNG figures in dots per inch (default 200)")
       ->check(CLI::Range(10, 2400));
+}
+
+CLI::Validator planes_validator() {
+  return CLI::Validator(
+      [](std::string& text) {
+        for (const std::string& plane : eval::split_planes(text))
+          if (plane != "xy" && plane != "xz" && plane != "yz")
+            return "unknown plane '" + plane + "' (use xy, xz or yz)";
+        return std::string();
+      },
+      "PLANES");
 }
 
 void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
@@ -115,14 +128,7 @@ void add_ate_options(CLI::App* cmd, eval::EvaluationRequest& a) {
       ->capture_default_str();
   cmd->add_option("--aligned", a.aligned_path, "Write the aligned estimate (TUM format)");
   cmd->add_option("--planes", a.planes, "Trajectory plot planes, e.g. xy,xz,yz")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            for (const std::string& plane : eval::split_planes(text))
-              if (plane != "xy" && plane != "xz" && plane != "yz")
-                return "unknown plane '" + plane + "' (use xy, xz or yz)";
-            return std::string();
-          },
-          "PLANES"))
+      ->check(planes_validator())
       ->capture_default_str();
 }
 
@@ -157,14 +163,21 @@ void run_compare(const CompareArgs& args) {
       {"figure", "compare"}, {"out", out.string()}, {"title", args.title}, {"runs", json::array()}};
   for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
   figure.update(eval::figure_files(args.plot_formats, args.pdf, args.dpi));
-  const eval::PlotOutcome plot = eval::draw_figures(json::array({figure}));
+  json figures = json::array({figure});
+  if (args.trajectories) {
+    figure["figure"] = "trajectories";
+    figure["planes"] = eval::split_planes(args.planes);
+    figures.push_back(figure);
+  }
+  const eval::PlotOutcome plot = eval::draw_figures(figures);
   if (plot.python_missing) {
     std::cerr << "slamkit: note: no comparison plot drawn: " << plot.problem
               << "; the tables were written\n";
     return;
   }
   if (!plot.drawn) {
-    std::cerr << "slamkit: error: no comparison plot drawn: " << plot.problem << "\n";
+    std::cerr << "slamkit: error: comparison plots not all drawn: " << plot.problem
+              << "; the tables were written\n";
     throw ExitCode{1};
   }
   if (!args.quiet) std::printf("comparison written to %s\n", out.string().c_str());
@@ -222,6 +235,12 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmp_cmd->add_option("--out", cmp->out_dir, "Output folder")->required();
   cmp_cmd->add_option("--title", cmp->title, "Plot title (default: the runs' sequence)");
   add_figure_options(cmp_cmd, cmp->plot_formats, cmp->pdf, cmp->dpi);
+  cmp_cmd->add_flag("--trajectories", cmp->trajectories,
+                    "Also draw the runs' aligned estimates and the groundtruth together "
+                    "(trajectories_PLANE, trajectories_xyz; the runs must share a groundtruth)");
+  cmp_cmd->add_option("--planes", cmp->planes, "Planes of --trajectories, e.g. xy,xz,yz")
+      ->check(planes_validator())
+      ->capture_default_str();
   cmp_cmd->add_flag("--quiet", cmp->quiet, "Print nothing");
   cmp_cmd->callback([cmp] { run_compare(*cmp); });
 });

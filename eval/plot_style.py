@@ -27,6 +27,10 @@ matplotlib.rcParams.update(STYLE)
 NO_DATE = {"png": None, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
 
 
+class InputMismatch(Exception):
+    """Inputs that cannot be drawn in one figure; plot.py prints the message as one line."""
+
+
 def new_figure(figsize, rows=1, sharex=False):
     """A figure and its axes (one, or a column of `rows`)."""
     fig = Figure(figsize=figsize)

@@ -1,4 +1,5 @@
-// Figures for papers, end to end: --plot-format (and --pdf, its older spelling) and --dpi.
+// Figures for papers, end to end: --plot-format (and --pdf, its older spelling), --dpi, and
+// `eval compare --trajectories`, which draws several runs of one groundtruth together.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,6 +108,56 @@ TEST(Figures, DpiSetsThePngResolutionAndItsPixelSize) {
   EXPECT_EQ(resolution_100, 3937u);  // 100 per inch in pixels per metre, rounded
   EXPECT_EQ(resolution_300, 11811u);
   EXPECT_NEAR(double(width_300) / width_100, 3.0, 0.05);
+}
+
+// Two runs of one groundtruth are drawn together; a run of another groundtruth is refused by
+// the script with one line naming both runs, after the tables were written.
+TEST(Figures, CompareDrawsTheRunsTrajectoriesTogetherAndRefusesAnotherGroundtruth) {
+  REQUIRE_MATPLOTLIB();
+  const fs::path dir = test::temp_dir("figures");
+  const fs::path gt = write_tum(dir / "gt.txt", 150);
+  const fs::path other_gt = write_tum(dir / "other_gt.txt", 140);
+  std::string log;
+  const auto evaluate = [&](const fs::path& truth, double wobble, const std::string& name) {
+    const fs::path est = write_tum(dir / (name + ".txt"), 150, wobble);
+    return test::run_slamkit("eval ate " + quoted(truth) + " " + quoted(est) + " --out " +
+                                 quoted(dir / name) + " --no-plot --quiet",
+                             &log);
+  };
+  ASSERT_EQ(evaluate(gt, 0.01, "one"), 0) << log;
+  ASSERT_EQ(evaluate(gt, 0.03, "two"), 0) << log;
+  ASSERT_EQ(evaluate(other_gt, 0.01, "elsewhere"), 0) << log;
+
+  ASSERT_EQ(test::run_slamkit("eval compare " + quoted(dir / "one") + " " + quoted(dir / "two") +
+                                  " --out " + quoted(dir / "cmp") +
+                                  " --trajectories --planes xy,xz --plot-format svg --quiet",
+                              &log),
+            0)
+      << log;
+  for (const char* name : {"trajectories_xy", "trajectories_xz", "trajectories_xyz"}) {
+    const std::string svg = test::read_text(dir / "cmp" / (std::string(name) + ".svg"));
+    EXPECT_NE(svg.find("<svg"), std::string::npos) << name;
+    // The legend names each run (SVG keeps text as text).
+    EXPECT_NE(svg.find(">one<"), std::string::npos) << name;
+    EXPECT_NE(svg.find(">two<"), std::string::npos) << name;
+  }
+  for (const char* table : {"table.csv", "table.md", "table.tex"})
+    EXPECT_TRUE(fs::exists(dir / "cmp" / table)) << table;
+
+  EXPECT_EQ(
+      test::run_slamkit("eval compare " + quoted(dir / "one") + " " + quoted(dir / "elsewhere") +
+                            " --out " + quoted(dir / "bad") + " --trajectories",
+                        &log),
+      1);
+  EXPECT_NE(log.find("plot.py: no trajectories figure: runs 'one' and 'elsewhere' were evaluated "
+                     "against different groundtruth (" +
+                     gt.string() + "; " + other_gt.string() + ")"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(log.find("Traceback"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(dir / "bad" / "trajectories_xy.png"));
+  EXPECT_TRUE(fs::exists(dir / "bad" / "table.tex"));
+  EXPECT_TRUE(fs::exists(dir / "bad" / "ate_comparison.png"));  // the box plot is drawn anyway
 }
 
 }  // namespace
