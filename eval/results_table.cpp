@@ -72,7 +72,7 @@ RoundedTable round_table(const std::vector<EvaluatedRun>& runs) {
   for (size_t r = 0; r < runs.size(); ++r)
     for (const Column& c : kColumns) {
       const auto v = number(runs[r], c);
-      char text[40] = "";
+      char text[128] = "";  // inputs are within 1e100, so are the errors: 101 digits
       if (v && c.unit == Unit::kCount) std::snprintf(text, sizeof text, "%.0f", *v);
       if (v && c.unit != Unit::kCount)
         std::snprintf(text, sizeof text, "%.*f",
