@@ -17,6 +17,7 @@
 #include "eval/evaluation_run.h"
 #include "eval/metrics/metrics_json.h"
 #include "eval/plotting.h"
+#include "eval/results_table.h"
 #include "eval/metrics/rpe.h"
 #include "eval/metrics/summary.h"
 #include "io/trajectory_io.h"
@@ -37,10 +38,38 @@ void evaluate_or_exit(eval::EvaluationRequest& request, bool do_ate, bool do_rpe
 struct CompareArgs {
   std::vector<std::string> runs;
   std::string out_dir;
+  std::vector<std::string> plot_formats;
   bool pdf = false;
+  int dpi = 0;
+  bool trajectories = false;
+  std::string planes = "xy";
   std::string title;
   bool quiet = false;
 };
+
+// The options of every command that draws figures: which files, and the PNG's resolution.
+void add_figure_options(CLI::App* cmd, std::vector<std::string>& formats, bool& pdf, int& dpi) {
+  // One value per --plot-format, so that a list cannot swallow the positional arguments after it.
+  cmd->add_option("--plot-format", formats,
+                  "Figure files: png, svg or pdf, repeated or comma-separated (default: png,svg)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember({"png", "svg", "pdf"}));
+  cmd->add_flag("--pdf", pdf, "Also write PDF figures (with the default: png, svg and pdf)");
+  cmd->add_option("--dpi", dpi, "Resolution of PNG figures in dots per inch (default 200)")
+      ->check(CLI::Range(10, 2400));
+}
+
+CLI::Validator planes_validator() {
+  return CLI::Validator(
+      [](std::string& text) {
+        for (const std::string& plane : eval::split_planes(text))
+          if (plane != "xy" && plane != "xz" && plane != "yz")
+            return "unknown plane '" + plane + "' (use xy, xz or yz)";
+        return std::string();
+      },
+      "PLANES");
+}
 
 void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("groundtruth", a.gt, "Groundtruth trajectory (tum, kitti or euroc)")
@@ -82,7 +111,7 @@ void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--json", a.json_path, "metrics.json path (merged into if it exists)");
   cmd->add_option("--plot", a.plot_dir, "Draw plots into this folder (error if impossible)");
   cmd->add_flag("--no-plot", a.no_plot, "Do not draw plots into --out");
-  cmd->add_flag("--pdf", a.pdf, "Also write PDF plots");
+  add_figure_options(cmd, a.plot_formats, a.pdf, a.dpi);
   cmd->add_option("--title", a.title, "Sequence name for titles (default: groundtruth folder)");
   cmd->add_option("--system-name", a.system_name,
                   "System name for titles (default: estimate file name)");
@@ -99,14 +128,7 @@ void add_ate_options(CLI::App* cmd, eval::EvaluationRequest& a) {
       ->capture_default_str();
   cmd->add_option("--aligned", a.aligned_path, "Write the aligned estimate (TUM format)");
   cmd->add_option("--planes", a.planes, "Trajectory plot planes, e.g. xy,xz,yz")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            for (const std::string& plane : eval::split_planes(text))
-              if (plane != "xy" && plane != "xz" && plane != "yz")
-                return "unknown plane '" + plane + "' (use xy, xz or yz)";
-            return std::string();
-          },
-          "PLANES"))
+      ->check(planes_validator())
       ->capture_default_str();
 }
 
@@ -132,24 +154,30 @@ void run_compare(const CompareArgs& args) {
   const fs::path out(args.out_dir);
   eval::write_comparison_markdown(out / "comparison.md", runs);
   eval::write_comparison_csv(out / "comparison.csv", runs);
+  eval::write_results_tables(out, runs);
   if (!args.quiet) {
     std::ifstream table(out / "comparison.md");
     std::cout << table.rdbuf();
   }
-  json figure = {{"figure", "compare"},
-                 {"out", out.string()},
-                 {"title", args.title},
-                 {"pdf", args.pdf},
-                 {"runs", json::array()}};
+  json figure = {
+      {"figure", "compare"}, {"out", out.string()}, {"title", args.title}, {"runs", json::array()}};
   for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
-  const eval::PlotOutcome plot = eval::draw_figures(json::array({figure}));
+  figure.update(eval::figure_files(args.plot_formats, args.pdf, args.dpi));
+  json figures = json::array({figure});
+  if (args.trajectories) {
+    figure["figure"] = "trajectories";
+    figure["planes"] = eval::split_planes(args.planes);
+    figures.push_back(figure);
+  }
+  const eval::PlotOutcome plot = eval::draw_figures(figures);
   if (plot.python_missing) {
     std::cerr << "slamkit: note: no comparison plot drawn: " << plot.problem
               << "; the tables were written\n";
     return;
   }
   if (!plot.drawn) {
-    std::cerr << "slamkit: error: no comparison plot drawn: " << plot.problem << "\n";
+    std::cerr << "slamkit: error: comparison plots not all drawn: " << plot.problem
+              << "; the tables were written\n";
     throw ExitCode{1};
   }
   if (!args.quiet) std::printf("comparison written to %s\n", out.string().c_str());
@@ -206,7 +234,13 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmp_cmd->add_option("runs", cmp->runs, "Run folders")->required();
   cmp_cmd->add_option("--out", cmp->out_dir, "Output folder")->required();
   cmp_cmd->add_option("--title", cmp->title, "Plot title (default: the runs' sequence)");
-  cmp_cmd->add_flag("--pdf", cmp->pdf, "Also write a PDF plot");
+  add_figure_options(cmp_cmd, cmp->plot_formats, cmp->pdf, cmp->dpi);
+  cmp_cmd->add_flag("--trajectories", cmp->trajectories,
+                    "Also draw the runs' aligned estimates and the groundtruth together "
+                    "(trajectories_PLANE, trajectories_xyz; the runs must share a groundtruth)");
+  cmp_cmd->add_option("--planes", cmp->planes, "Planes of --trajectories, e.g. xy,xz,yz")
+      ->check(planes_validator())
+      ->capture_default_str();
   cmp_cmd->add_flag("--quiet", cmp->quiet, "Print nothing");
   cmp_cmd->callback([cmp] { run_compare(*cmp); });
 });

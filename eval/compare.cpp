@@ -36,23 +36,16 @@ const Column kColumns[] = {
 
 // The cell text: integers as is, metres/degrees to 6 decimals (the benchmark's digits).
 std::string cell(const EvaluatedRun& run, const Column& c) {
-  if (!run.metrics.contains(c.section)) return "";
-  const json* v = &run.metrics[c.section];
-  std::string key = c.key;
-  for (size_t dot; (dot = key.find('.')) != std::string::npos; key = key.substr(dot + 1)) {
-    if (!v->contains(key.substr(0, dot))) return "";
-    v = &(*v)[key.substr(0, dot)];
-  }
-  if (!v->contains(key)) return "";
-  const json& x = (*v)[key];
-  if (!x.is_number() || !std::isfinite(x.get<double>()))
+  const json* x = metric_value(run, std::string(c.section) + "." + c.key);
+  if (!x) return "";
+  if (!x->is_number() || !std::isfinite(x->get<double>()))
     throw_input_error((run.dir / "metrics.json").string(),
-                      std::string(c.section) + "." + c.key + " is " + printable(x.dump()) +
+                      std::string(c.section) + "." + c.key + " is " + printable(x->dump()) +
                           ", not a finite number (written from overflowing input by an older "
                           "slamkit? evaluate the run again)");
-  if (x.is_number_integer()) return std::to_string(x.get<long long>());
+  if (x->is_number_integer()) return std::to_string(x->get<long long>());
   char text[32];
-  std::snprintf(text, sizeof text, "%.6f", x.get<double>());
+  std::snprintf(text, sizeof text, "%.6f", x->get<double>());
   return text;
 }
 
@@ -64,6 +57,16 @@ std::ofstream open_output(const std::filesystem::path& path) {
 }
 
 }  // namespace
+
+const json* metric_value(const EvaluatedRun& run, const std::string& path) {
+  const json* v = &run.metrics;
+  std::string key = path;
+  for (size_t dot; (dot = key.find('.')) != std::string::npos; key = key.substr(dot + 1)) {
+    if (!v->is_object() || !v->contains(key.substr(0, dot))) return nullptr;
+    v = &(*v)[key.substr(0, dot)];
+  }
+  return v->is_object() && v->contains(key) ? &(*v)[key] : nullptr;
+}
 
 std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& dirs) {
   std::vector<EvaluatedRun> runs;

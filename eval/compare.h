@@ -1,6 +1,7 @@
 #pragma once
 // Comparing several evaluated runs (folders holding metrics.json and errors.csv): a table in
-// Markdown and CSV; the box plot is drawn by plot_compare.py (through plot.py).
+// Markdown and CSV (the paper's tables are results_table.h's); the box plot is drawn by
+// plot_compare.py (through plot.py).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -18,6 +19,10 @@ struct EvaluatedRun {
 // Reads RUN/metrics.json of each folder (InputError naming the file if missing, malformed,
 // without an "ate" section, or holding a table value that is not a finite number).
 std::vector<EvaluatedRun> load_runs(const std::vector<std::filesystem::path>& dirs);
+
+// The value at `path` ("ate.rmse", "rpe.trans.rmse") of the run's metrics.json, or null when
+// absent. load_runs has checked that the values of the comparison table are finite numbers.
+const nlohmann::json* metric_value(const EvaluatedRun& run, const std::string& path);
 
 // One row per run: ATE pairs and statistics, RPE pairs and RMSEs (blank without RPE).
 void write_comparison_markdown(const std::filesystem::path& path,

@@ -215,8 +215,8 @@ void add_figures(const EvaluationRequest& a, const std::string& kind, const std:
   if (a.json_path.empty() || csv_path.empty()) return;
   json figure = {{"figure", kind},   {"metrics", a.json_path},
                  {"csv", csv_path},  {"out", requested ? a.plot_dir : a.out_dir},
-                 {"title", a.title}, {"system_name", a.system_name},
-                 {"pdf", a.pdf}};
+                 {"title", a.title}, {"system_name", a.system_name}};
+  figure.update(figure_files(a.plot_formats, a.pdf, a.dpi));
   if (kind == "ate") figure["planes"] = split_planes(a.planes);
   figures.push_back(figure);
 }

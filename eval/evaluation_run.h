@@ -36,7 +36,9 @@ struct EvaluationRequest {
   std::string ate_csv, rpe_csv, aligned_path;
   std::string plot_dir;  // --plot: plots must be drawn (failing exits 1)
   bool no_plot = false;
-  bool pdf = false;
+  std::vector<std::string> plot_formats;  // png, svg, pdf; empty: png and svg (plotting.h)
+  bool pdf = false;                       // pdf as well
+  int dpi = 0;                            // of PNGs; 0: the plot style's
   std::string planes = "xy";
   std::string title, system_name;
   bool quiet = false;

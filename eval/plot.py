@@ -3,8 +3,9 @@
 then each figure is drawn in a child forked from this process, side by side on the cores.
 
   plot.py REQUEST    REQUEST: a JSON list of figures, each {"figure": KIND, ...} with KIND
-                     ate, rpe (plot_trajectory_errors.py), compare (plot_compare.py) or
-                     history (plot_history.py) and the fields that module's function reads.
+                     ate, rpe (plot_trajectory_errors.py), compare (plot_compare.py),
+                     history (plot_history.py) or trajectories (plot_trajectories.py) and
+                     the fields that module's function reads.
 Example: plot.py '[{"figure": "ate", "metrics": "run/metrics.json",
                    "csv": "run/errors.csv", "out": "run", "title": "fr2", "system_name": "x"}]'
 Exit codes: 0 drawn, 1 a figure failed, 3 no matplotlib (or numpy) in this interpreter.
@@ -21,6 +22,7 @@ KINDS = {
     "rpe": ("plot_trajectory_errors", "plot_rpe"),
     "compare": ("plot_compare", "plot_compare"),
     "history": ("plot_history", "plot_history"),
+    "trajectories": ("plot_trajectories", "plot_trajectories"),
 }
 NO_MATPLOTLIB = 3
 
@@ -48,6 +50,7 @@ def main():
         sys.exit(NO_MATPLOTLIB)  # slamkit says so in its own words
     for figure in figures:  # imported here, once, before the children are forked
         importlib.import_module(KINDS[figure["figure"]][0])
+    from plot_style import InputMismatch
     # Each figure kind is drawn in a child forked after the imports, as many at once as there
     # are cores: drawing is single-threaded and is 60% of the time (0.6 of 1.0 s on fr2/desk).
     # A child's files are the same as drawn alone: nothing is shared but the imported modules.
@@ -67,6 +70,9 @@ def main():
                 if error.filename:
                     what = "%s: %s" % (error.filename, what)
                 print("plot.py: no %s figure: %s" % (figure["figure"], what), file=sys.stderr)
+                code = 1
+            except InputMismatch as error:  # the inputs' fault: the message says what to do
+                print("plot.py: no %s figure: %s" % (figure["figure"], error), file=sys.stderr)
                 code = 1
             except BaseException:  # a defect: the traceback says where
                 traceback.print_exc()

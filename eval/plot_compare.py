@@ -1,5 +1,5 @@
 """Comparison of several evaluated runs: box plot of the per-pose ATE of each run, with a
-table of the main statistics under it (ate_comparison.png / .svg / .pdf)."""
+table of the main statistics under it (ate_comparison.png / .svg, or the formats asked for)."""
 import json
 import os
 
@@ -9,7 +9,7 @@ from plot_style import new_figure, save
 
 
 def plot_compare(request):
-    """Request: runs (list of [name, folder]), out, title (optional), pdf."""
+    """Request: runs (list of [name, folder]), out, title (optional), formats, dpi."""
     names, errors, rows = [], [], []
     sequences = set()
     for name, folder in request["runs"]:
@@ -43,4 +43,4 @@ def plot_compare(request):
     table.set_fontsize(8)
     ax.text(0.0, -0.24 - height, "ATE statistics and RPE t (translational RMSE) in m, RPE rot "
             "(rotational RMSE) in deg", transform=ax.transAxes, fontsize=8, va="top")
-    return save(fig, request["out"], "ate_comparison", request.get("pdf", False))
+    save(fig, request["out"], "ate_comparison", request)

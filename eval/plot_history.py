@@ -11,7 +11,7 @@ from plot_style import new_figure, save
 
 def plot_history(request):
     """Request: histories (history.csv files, oldest first), suite (the 'suite' column), out,
-    pdf."""
+    formats, dpi."""
     versions, series = [], {}
     for history in request["histories"]:
         with open(history, newline="") as f:
@@ -35,4 +35,4 @@ def plot_history(request):
     ax.set_title("ATE RMSE over versions: suite %s" % request["suite"])
     if series:
         ax.legend(loc="best", framealpha=0.9)
-    return save(fig, request["out"], "ate_history", request.get("pdf", False))
+    save(fig, request["out"], "ate_history", request)

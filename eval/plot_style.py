@@ -27,24 +27,32 @@ matplotlib.rcParams.update(STYLE)
 NO_DATE = {"png": None, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
 
 
+class InputMismatch(Exception):
+    """Inputs that cannot be drawn in one figure; plot.py prints the message as one line."""
+
+
 def new_figure(figsize, rows=1, sharex=False):
     """A figure and its axes (one, or a column of `rows`)."""
     fig = Figure(figsize=figsize)
     return fig, fig.subplots(rows, 1, sharex=sharex)
 
 
-def save(fig, out_dir, name, pdf):
-    """Writes NAME.png and NAME.svg (and NAME.pdf) into out_dir; returns the PNG path.
+def save(fig, out_dir, name, request):
+    """Writes NAME.EXT into out_dir for each of request's "formats" (png, svg, pdf; default png
+    and svg), the PNG at request's "dpi" (default the style's).
 
-    The tight bounding box is computed once for all formats: savefig's bbox_inches="tight"
-    lays the figure out again for each file, a third of the drawing time."""
+    Each file is cropped to the figure's content with a small pad, as bbox_inches="tight" does;
+    the bounding box is computed once for all formats: savefig's bbox_inches="tight" lays the
+    figure out again for each file, a third of the drawing time."""
     os.makedirs(out_dir, exist_ok=True)
     renderer = FigureCanvasAgg(fig).get_renderer()
     bbox = fig.get_tightbbox(renderer).padded(matplotlib.rcParams["savefig.pad_inches"])
-    for ext in ["png", "svg"] + (["pdf"] if pdf else []):
+    for ext in request.get("formats", ["png", "svg"]):
         path = os.path.join(out_dir, "%s.%s" % (name, ext))
+        # Only the PNG is drawn in pixels; SVG and PDF keep the style's dpi for the few raster
+        # parts (a colour bar), so a PNG for a slide does not change them.
+        dpi = request.get("dpi") if ext == "png" else None
         try:
-            fig.savefig(path, bbox_inches=bbox, metadata=NO_DATE[ext])
+            fig.savefig(path, bbox_inches=bbox, metadata=NO_DATE[ext], dpi=dpi)
         except OSError as error:  # a full disk fails in a writer that does not name the file
             raise OSError(error.errno, "cannot write %s: %s" % (path, error.strerror)) from None
-    return os.path.join(out_dir, name + ".png")

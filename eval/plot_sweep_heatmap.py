@@ -54,7 +54,8 @@ def main():
                  % (" — " + args.title if args.title else ""))
     fig.colorbar(image, ax=ax, label="ATE / best ATE of the sequence",
                  extend="max" if worst > top else "neither")
-    save(fig, args.out, "ate_heatmap", args.pdf)
+    save(fig, args.out, "ate_heatmap",
+         {"formats": ["png", "svg"] + (["pdf"] if args.pdf else [])})
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@
                         estimate coloured by its error, and the difference segments between
                         matched poses (as evaluate_ate.py --plot draws them).
   rpe: rpe_over_time  - translational and rotational relative error over time.
-Each is written as PNG and SVG (and PDF with "pdf": true).
+Each is written as PNG and SVG, or in the request's "formats" (plot_style.save).
 """
 import json
 
@@ -64,7 +64,7 @@ def plot_ate_over_time(errors, metrics, request):
     ax.set_title("Absolute trajectory error: %s on %s\n(%d pose pairs, %s alignment)"
                  % (request["system_name"], request["title"], ate["pairs"],
                     ate["alignment"]["method"]))
-    return save(fig, request["out"], "ate_over_time", request.get("pdf", False))
+    save(fig, request["out"], "ate_over_time", request)
 
 
 def plot_trajectory(errors, metrics, plane, request):
@@ -90,7 +90,7 @@ def plot_trajectory(errors, metrics, plane, request):
                  % (plane, request["system_name"], request["title"], metrics["ate"]["rmse"],
                     metrics["ate"]["pairs"]))
     ax.legend(loc="best", markerscale=3, framealpha=0.9)
-    return save(fig, request["out"], "trajectory_" + plane, request.get("pdf", False))
+    save(fig, request["out"], "trajectory_" + plane, request)
 
 
 def plot_rpe_over_time(pairs, metrics, request):
@@ -111,7 +111,7 @@ def plot_rpe_over_time(pairs, metrics, request):
     ax_t.set_title("Relative pose error over %g %s: %s on %s\n(%d pose pairs, %s convention)"
                    % (rpe["delta"], unit, request["system_name"], request["title"],
                       rpe["pairs"], rpe["convention"]))
-    return save(fig, request["out"], "rpe_over_time", request.get("pdf", False))
+    save(fig, request["out"], "rpe_over_time", request)
 
 
 def read_inputs(request):
@@ -121,7 +121,8 @@ def read_inputs(request):
 
 
 def plot_ate(request):
-    """Request: metrics, csv (errors.csv), out, title, system_name, planes (list), pdf."""
+    """Request: metrics, csv (errors.csv), out, title, system_name, planes (list), formats,
+    dpi."""
     errors, metrics = read_inputs(request)
     plot_ate_over_time(errors, metrics, request)
     for plane in request.get("planes", ["xy"]):
@@ -131,6 +132,6 @@ def plot_ate(request):
 
 
 def plot_rpe(request):
-    """Request: metrics, csv (rpe.csv), out, title, system_name, pdf."""
+    """Request: metrics, csv (rpe.csv), out, title, system_name, formats, dpi."""
     pairs, metrics = read_inputs(request)
     plot_rpe_over_time(pairs, metrics, request)

@@ -3,6 +3,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -53,6 +54,16 @@ std::optional<std::filesystem::path> plot_script(const std::string& script, std:
 }
 
 }  // namespace
+
+nlohmann::json figure_files(const std::vector<std::string>& formats, bool pdf, int dpi) {
+  std::vector<std::string> files;
+  for (const std::string& f : formats.empty() ? std::vector<std::string>{"png", "svg"} : formats)
+    if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+  if (pdf && std::find(files.begin(), files.end(), "pdf") == files.end()) files.push_back("pdf");
+  nlohmann::json fields = {{"formats", files}};
+  if (dpi != 0) fields["dpi"] = dpi;
+  return fields;
+}
 
 PlotOutcome draw_figures(const nlohmann::json& figures) {
   PlotOutcome outcome;

@@ -19,6 +19,12 @@ struct PlotOutcome {
   double seconds = 0;           // wall time of the plotting process
 };
 
+// The "formats" and "dpi" fields of a figure request (plot_style.save): `formats` as given
+// (--plot-format; empty: png and svg, the files every command wrote before it existed) with pdf
+// added for `pdf` (--pdf, the older spelling, which kept the PNG and SVG), each once; "dpi" only
+// when `dpi` (--dpi, PNG only) is not 0, else the style's 200.
+nlohmann::json figure_files(const std::vector<std::string>& formats, bool pdf, int dpi);
+
 // Runs plot.py with `figures`, a JSON list of {"figure": KIND, ...} (see plot.py), under
 // $SLAMKIT_PYTHON, else /usr/bin/python3 (Debian's, which has matplotlib; the python3 on
 // PATH may be another build without it). plot.py is found as eval/plot_scripts.h says:

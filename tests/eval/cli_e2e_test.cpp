@@ -401,6 +401,12 @@ TEST(EvalCli, RealFr2DeskAllWritesReferenceNumbersAndPlotsAndCompareTablesThem) 
       << text.str();
   EXPECT_NE(text.str().find("| ORB-SLAM sim3 | fr2_desk |"), std::string::npos) << text.str();
   EXPECT_TRUE(fs::exists(dir / "cmp" / "comparison.csv"));
+  // The paper tables: every digit in CSV, rounded to 5 decimals (3 digits of 0.00619) in LaTeX.
+  EXPECT_NE(test::read_text(dir / "cmp" / "table.csv").find("\norbslam,0.00814396"),
+            std::string::npos);
+  EXPECT_NE(test::read_text(dir / "cmp" / "table.tex").find("\norbslam & 0.00814 & "),
+            std::string::npos)
+      << test::read_text(dir / "cmp" / "table.tex");
   if (can_plot) {
     EXPECT_TRUE(fs::exists(dir / "cmp" / "ate_comparison.png"));
   }
