@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -100,6 +101,27 @@ const std::map<std::string, Option>& option_table() {
       {"plot", {kCommon, [](auto& a, auto v) { a.plot_dir = text(v); }}},
       {"no_plot", {kCommon, [](auto& a, auto v) { a.no_plot = v.template cast<bool>(); }}},
       {"pdf", {kCommon, [](auto& a, auto v) { a.pdf = v.template cast<bool>(); }}},
+      {"plot_format",
+       {kCommon,
+        [](auto& a, auto v) {
+          // "png,svg" or a list of names, as --plot-format given once or repeated.
+          std::vector<std::string> formats;
+          if (py::isinstance<py::str>(v)) {
+            std::stringstream list(text(v));
+            for (std::string name; std::getline(list, name, ',');) formats.push_back(name);
+          } else {
+            formats = v.template cast<std::vector<std::string>>();
+          }
+          for (const std::string& format : formats)
+            a.plot_formats.push_back(member(py::str(format), "plot_format", {"png", "svg", "pdf"}));
+        }}},
+      {"dpi",
+       {kCommon,
+        [](auto& a, auto v) {
+          a.dpi = v.template cast<int>();
+          if (a.dpi < 10 || a.dpi > 2400)
+            throw std::invalid_argument("dpi: " + std::to_string(a.dpi) + " not in [10, 2400]");
+        }}},
       {"title", {kCommon, [](auto& a, auto v) { a.title = text(v); }}},
       {"system_name", {kCommon, [](auto& a, auto v) { a.system_name = text(v); }}},
       {"quiet", {kCommon, [](auto& a, auto v) { a.quiet = v.template cast<bool>(); }}},

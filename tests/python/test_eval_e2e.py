@@ -128,6 +128,21 @@ def test_plots_on_request(tmp_path):
         assert (tmp_path / "plots" / f"{figure}.png").stat().st_size > 0, figure
 
 
+def test_figure_formats_and_resolution_as_the_clis(tmp_path):
+    gt, est = synthetic_files(tmp_path)
+    slamkit.ate(str(gt), str(est), plot=tmp_path / "python", plot_format="pdf,png", dpi=50)
+    result = run_cli("eval", "ate", gt, est, "--plot", tmp_path / "cli", "--plot-format", "pdf",
+                     "--plot-format", "png", "--dpi", 50, "--quiet")
+    assert result.returncode == 0, result.stderr
+    names = sorted(p.name for p in (tmp_path / "python").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert "ate_over_time.pdf" in names and not any(n.endswith(".svg") for n in names)
+    png = "ate_over_time.png"
+    assert (tmp_path / "python" / png).read_bytes() == (tmp_path / "cli" / png).read_bytes()
+    with pytest.raises(ValueError, match="plot_format"):
+        slamkit.ate(str(gt), str(est), plot=tmp_path / "bad", plot_format=["png", "eps"])
+
+
 def test_a_million_poses_from_arrays(tmp_path, capsys):
     """ate() on arrays of 1,000,000 poses: the CLI's numbers, and both durations printed (not
     asserted: the machine is shared; the module was about 2x faster than the CLI here, which
