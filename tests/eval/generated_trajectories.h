@@ -11,7 +11,8 @@ namespace slamkit::eval::test_files {
 
 namespace fs = std::filesystem;
 
-// Pseudo-random numbers in [-1, 1) from a 64-bit LCG: the same files on every platform.
+// Pseudo-random numbers in [-1, 1) from a 64-bit LCG (the same everywhere, unlike <random>'s
+// distributions).
 class Noise {
  public:
   double next() {
