@@ -101,8 +101,8 @@ void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
                   "trajectory (default: the convention's)")
       ->check(CLI::IsMember({"tum", "evo"}));
   cmd->add_option("--duplicate-stamps", a.duplicates,
-                  "Of a repeated timestamp keep the last line (tum) or the first (evo)")
-      ->check(CLI::IsMember({"last", "first"}));
+                  "Of a repeated timestamp keep the last line (tum), the first, or all (evo)")
+      ->check(CLI::IsMember({"last", "first", "all"}));
   cmd->add_option("--time-unit", a.time_unit, "Unit of the files' timestamps: s, us or ns")
       ->check(CLI::IsMember({"s", "us", "ns"}))
       ->capture_default_str();

@@ -57,7 +57,7 @@ Rules resolve_rules(EvaluationRequest& a) {
   r.association.method = parse_association_method(pick(a.association, "tum", "evo"));
   r.association.max_diff = a.max_diff.value_or(evo ? kEvoMaxDiff : kTumMaxDiff);
   r.association.offset = a.offset;
-  r.reading.duplicates = parse_duplicate_stamps(pick(a.duplicates, "last", "first"));
+  r.reading.duplicates = parse_duplicate_stamps(pick(a.duplicates, "last", "all"));
   r.reading.time_unit = parse_time_unit(a.time_unit);
   a.rpe.convention = parse_rpe_convention(pick(a.rpe_convention, "tum", "evo"));
   return r;

@@ -73,7 +73,7 @@ const std::map<std::string, Option>& option_table() {
       {"duplicate_stamps",
        {kCommon,
         [](auto& a, auto v) {
-          a.duplicates = member(v, "duplicate_stamps", {"last", "first"});
+          a.duplicates = member(v, "duplicate_stamps", {"last", "first", "all"});
         }}},
       {"time_unit",
        {kCommon,

@@ -28,6 +28,7 @@ std::optional<size_t> nearest_evo(const std::vector<double>& longer, double shif
       first_after == longer.end() ? longer.size() - 1 : size_t(first_after - longer.begin());
   const auto diff = [&](size_t j) { return std::abs((longer[j] + shift) - stamp); };
   if (best > 0 && diff(best - 1) <= diff(best)) --best;
+  while (best > 0 && longer[best - 1] == longer[best]) --best;  // argmin: first of equal stamps
   if (!(diff(best) <= max_diff)) return std::nullopt;
   return best;
 }

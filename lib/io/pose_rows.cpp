@@ -147,8 +147,17 @@ void PoseRows::sort_by_stamp() {
   reorder(lines_, order);
 }
 
-// Keeps one line of each run of equal stamps (in place), reporting each dropped line.
+// Keeps one line of each run of equal stamps (in place), reporting each dropped line; with
+// kKeepAll keeps them all, reporting each repeat.
 void PoseRows::drop_duplicates(DuplicateStamps rule) {
+  if (rule == DuplicateStamps::kKeepAll) {
+    for (size_t k = 1; k < stamps_.size(); ++k)
+      if (stamps_[k] == stamps_[k - 1])
+        result_.warnings.push_back(name_ + ":" + std::to_string(lines_[k]) +
+                                   ": duplicate timestamp, line kept beside line " +
+                                   std::to_string(lines_[k - 1]));
+    return;
+  }
   size_t kept = 0;
   for (size_t begin = 0, end; begin < stamps_.size(); begin = end) {
     end = begin + 1;

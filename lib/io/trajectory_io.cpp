@@ -82,8 +82,9 @@ std::string printable(std::string_view text, size_t max_length) {
 namespace {
 constexpr EnumNames<TimeUnit, 3> kTimeUnitNames = {
     {{TimeUnit::kSeconds, "s"}, {TimeUnit::kMicroseconds, "us"}, {TimeUnit::kNanoseconds, "ns"}}};
-constexpr EnumNames<DuplicateStamps, 2> kDuplicateNames = {
-    {{DuplicateStamps::kKeepLast, "last"}, {DuplicateStamps::kKeepFirst, "first"}}};
+constexpr EnumNames<DuplicateStamps, 3> kDuplicateNames = {{{DuplicateStamps::kKeepLast, "last"},
+                                                             {DuplicateStamps::kKeepFirst, "first"},
+                                                             {DuplicateStamps::kKeepAll, "all"}}};
 }  // namespace
 
 std::string to_string(TimeUnit unit) { return name_of(kTimeUnitNames, unit); }

@@ -12,9 +12,9 @@ namespace slamkit {
 // Unit of the timestamps in a file; they are converted to seconds on reading.
 enum class TimeUnit { kSeconds, kMicroseconds, kNanoseconds };
 
-// Which line of a repeated timestamp is kept: the benchmark's dict-based reader keeps the
-// last, evo keeps the first.
-enum class DuplicateStamps { kKeepLast, kKeepFirst };
+// Which lines of a repeated timestamp are kept: the benchmark's dict-based reader keeps the
+// last; evo keeps every line (each is a pose of its trajectory and is associated on its own).
+enum class DuplicateStamps { kKeepLast, kKeepFirst, kKeepAll };
 
 struct TrajectoryReadOptions {
   TimeUnit time_unit = TimeUnit::kSeconds;
@@ -60,6 +60,6 @@ std::string printable(std::string_view text, size_t max_length = 64);
 std::string to_string(TimeUnit unit);
 TimeUnit parse_time_unit(const std::string& text);  // s, us, ns
 std::string to_string(DuplicateStamps rule);
-DuplicateStamps parse_duplicate_stamps(const std::string& text);  // last, first
+DuplicateStamps parse_duplicate_stamps(const std::string& text);  // last, first, all
 
 }  // namespace slamkit

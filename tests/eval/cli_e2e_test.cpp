@@ -139,7 +139,7 @@ TEST(EvalCli, EvoConventionSetsEvosDefaultsAndTheOptionsStillOverrideThem) {
       << log;
   const nlohmann::json m = read_json(dir / "m.json");
   EXPECT_EQ(m["settings"]["association"], "evo");
-  EXPECT_EQ(m["settings"]["duplicate_stamps"], "first");
+  EXPECT_EQ(m["settings"]["duplicate_stamps"], "all");
   EXPECT_EQ(m["settings"]["max_diff"], 0.02);
   EXPECT_EQ(m["rpe"]["convention"], "evo");
   EXPECT_EQ(m["rpe"]["pairs"], 99);  // evo keeps the last pair: (0,1) .. (98,99)

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "generated_trajectories.h"
 #include "support/test_data.h"
 
 namespace slamkit::eval {
@@ -113,6 +114,52 @@ TEST(EvalKitti, MatchesAnIndependentNumpyImplementation) {
     EXPECT_EQ(k["lengths"][i]["segments"], reference["lengths"][i]["segments"]);
     near(k["lengths"][i]["trans_pct"], reference["lengths"][i]["trans_pct"]);
     near(k["lengths"][i]["rot_deg_per_m"], reference["lengths"][i]["rot_deg_per_m"]);
+  }
+}
+
+// Against the devkit itself: evaluate_odometry.cpp (KITTI odometry devkit, as in
+// alexkreimer/odometry devkit/cpp) built with double for float, its arithmetic otherwise as
+// is, on the generated drive (poses/00.txt = gt.txt, results/00.txt = est.txt); its stats.txt
+// and per-length plot files printed with %.17g. Its units: translation as a fraction, rotation
+// in rad/m. (The float build differs from these by about 1e-5 relative.) The drive's steps are
+// not whole metres, so no segment ends on a tie that rounding could flip.
+TEST(EvalKitti, MatchesTheDevkitsOwnNumbers) {
+  struct Length {
+    double length_m;
+    int segments;
+    double t, r;
+  };
+  const Length kDevkit[] = {{100, 52, 0.01156214430008615, 0.00014624503209023128},
+                            {200, 46, 0.014976096658155845, 0.00014292690726437063},
+                            {300, 39, 0.019400470881779219, 0.00014324084677594837},
+                            {400, 30, 0.023168713249159534, 0.0001429000085296629},
+                            {500, 25, 0.025015698777399221, 0.00014404184125397571},
+                            {600, 17, 0.026756022194840898, 0.00014436768044771115},
+                            {700, 9, 0.026603175156067579, 0.00014202631712065917},
+                            {800, 3, 0.023159390312886507, 0.00014057399503720176}};
+  const double kOverallT = 0.018692141655359141, kOverallR = 0.00014392772905503606;
+  const fs::path dir = test::temp_dir("eval_kitti");
+  test_files::write_kitti_drive(dir);
+  ASSERT_EQ(test::run_slamkit("eval kitti " + quoted(dir / "gt.txt") + " " +
+                              quoted(dir / "est.txt") + " --quiet --json " +
+                              quoted(dir / "metrics.json")),
+            0);
+  std::ifstream in(dir / "metrics.json");
+  const nlohmann::json k = nlohmann::json::parse(in)["kitti"];
+  const auto expect_near = [](const nlohmann::json& got, double want, const std::string& what) {
+    EXPECT_NEAR(got.get<double>(), want, 1e-9 * std::abs(want)) << what;
+  };
+  EXPECT_EQ(k["segments"], 221);
+  expect_near(k["trans_pct"], 100 * kOverallT, "overall %");
+  expect_near(k["rot_deg_per_m"], kOverallR * 180 / M_PI, "overall deg/m");
+  ASSERT_EQ(k["lengths"].size(), 8u);
+  for (size_t i = 0; i < 8; ++i) {
+    const nlohmann::json& l = k["lengths"][i];
+    const std::string what = std::to_string(int(kDevkit[i].length_m)) + " m";
+    EXPECT_EQ(l["length_m"], kDevkit[i].length_m) << what;
+    EXPECT_EQ(l["segments"], kDevkit[i].segments) << what;
+    expect_near(l["trans_pct"], 100 * kDevkit[i].t, what + " %");
+    expect_near(l["rot_deg_per_m"], kDevkit[i].r * 180 / M_PI, what + " deg/m");
   }
 }
 

@@ -126,6 +126,21 @@ TEST(TrajectoryIo, EvoKeepsTheFirstLineOfARepeatedTimestamp) {
       << read.warnings[0];
 }
 
+TEST(TrajectoryIo, AllKeepsEveryLineOfARepeatedTimestampAsEvoDoes) {
+  const fs::path dir = test::temp_dir("traj");
+  const fs::path path =
+      write_text(dir, "dup.txt", "1 0 0 0 0 0 0 1\n1 5 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n");
+  const TrajectoryFile read =
+      read_tum_trajectory(path, {TimeUnit::kSeconds, DuplicateStamps::kKeepAll});
+  ASSERT_EQ(read.trajectory.size(), 3u);
+  EXPECT_EQ(read.trajectory[1].T_w_c.translation().x(), 5.0);  // file order kept
+  EXPECT_EQ(read.duplicate_stamps_dropped, 0);
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_NE(read.warnings[0].find("dup.txt:2: duplicate timestamp, line kept beside line 1"),
+            std::string::npos)
+      << read.warnings[0];
+}
+
 // Each of these was read without complaint (or echoed raw) before.
 TEST(TrajectoryIo, HostileBytesAreErrorsNamingFileAndLineWithTheTextEscaped) {
   const fs::path dir = test::temp_dir("traj");

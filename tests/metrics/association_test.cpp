@@ -54,6 +54,18 @@ TEST(Associate, EvoLoopsOverTheTrajectoryWithFewerPoses) {
   EXPECT_EQ(reverse[2].first, 4u);
 }
 
+// evo keeps every line of a repeated stamp (--duplicate-stamps all); numpy's argmin then takes
+// the first of equal stamps in the longer trajectory, whichever side of the stamp they are on.
+TEST(Associate, EvoTakesTheFirstOfRepeatedStampsInTheLongerTrajectory) {
+  const Trajectory gt = at_stamps({1.0, 1.0, 1.0, 2.0, 3.0});
+  const Trajectory est = at_stamps({1.004, 2.0, 2.0});
+  const auto evo = associate(gt, est, {AssociationMethod::kEvo, kEvoMaxDiff, 0.0});
+  ASSERT_EQ(evo.size(), 3u);  // both estimated poses at 2.0 are kept and take the same pose
+  EXPECT_EQ(evo[0].first, 0u);  // 1.004 -> the first 1.0 (the search lands on the last)
+  EXPECT_EQ(evo[1].first, 3u);
+  EXPECT_EQ(evo[2].first, 3u);
+}
+
 // The fast path (mutual best candidates first) must give the greedy rule's matching; checked
 // against a brute-force transcription of associate.py on random stamps with many conflicts.
 TEST(Associate, TumMatchesABruteForceGreedyOnRandomStamps) {
