@@ -5,6 +5,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bin/python/bindings.h"
+#include "io/euroc_csv.h"
+#include "io/kitti_poses.h"
 #include "io/trajectory_format.h"
 #include "bin/python/trajectory_arrays.h"
 
@@ -48,11 +50,23 @@ void bind_trajectory(py::module_& m) {
       .def_readonly("was_unsorted", &TrajectoryFile::was_unsorted)
       .def(
           "write",
-          [](const TrajectoryFile& f, const std::filesystem::path& path,
-             const std::string& comment) { write_tum_trajectory(path, f.trajectory, comment); },
-          "path"_a, "comment"_a = "",
-          "Writes a TUM file as slamkit does (every number in its shortest exact form), with "
-          "'# comment' first when given.")
+          [](const TrajectoryFile& f, const std::filesystem::path& path, const std::string& comment,
+             const std::string& format, const std::optional<std::filesystem::path>& times) {
+            const TrajectoryFormat chosen = parse_trajectory_format(format);
+            if (chosen != TrajectoryFormat::kTum && !comment.empty())
+              throw std::invalid_argument("comment: only a TUM file holds one");
+            if (chosen != TrajectoryFormat::kKitti && times)
+              throw std::invalid_argument("times: only a KITTI pose file has a times file");
+            py::gil_scoped_release release;
+            if (chosen == TrajectoryFormat::kTum) write_tum_trajectory(path, f.trajectory, comment);
+            if (chosen == TrajectoryFormat::kKitti) write_kitti_poses(path, f.trajectory, times);
+            if (chosen == TrajectoryFormat::kEuroc) write_euroc_csv(path, f.trajectory);
+          },
+          "path"_a, "comment"_a = "", py::kw_only(), "format"_a = "tum", "times"_a = py::none(),
+          "Writes the trajectory as read_trajectory reads it back: 'tum' as slamkit does (every "
+          "number in its shortest exact form, '# comment' first when given), 'kitti' (the 3x4 "
+          "[R|t] rows; times= also writes the stamps as a times.txt), 'euroc' (ASL CSV, stamps "
+          "rounded to the nanosecond).")
       .def("__repr__", [](const TrajectoryFile& f) {
         const Trajectory& t = f.trajectory;
         return "<slamkit.Trajectory " + std::to_string(t.size()) + " poses>";

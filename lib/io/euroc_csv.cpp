@@ -1,8 +1,11 @@
 #include "io/euroc_csv.h"
 
 #include <charconv>
+#include <cmath>
 
 #include "core/error.h"
+#include "core/number_format.h"
+#include "io/atomic_file.h"
 #include "io/pose_rows.h"
 
 namespace slamkit {
@@ -42,6 +45,31 @@ TrajectoryFile read_euroc_csv(const std::filesystem::path& path,
              Eigen::Quaterniond(v[4], v[5], v[6], v[7]), number);  // w first
   });
   return rows.finish(options.duplicates, "euroc");
+}
+
+void write_euroc_csv(const std::filesystem::path& path, const Trajectory& trajectory) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  constexpr long long kPerSecond = 1000000000;
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "#timestamp [ns],p_RS_R_x [m],p_RS_R_y [m],p_RS_R_z [m],q_RS_w [],q_RS_x [],q_RS_y [],"
+           "q_RS_z []\n";
+    for (size_t i = 0; i < trajectory.size(); ++i) {
+      // Whole seconds and the fraction apart, as seconds_from_ticks reads them: the fraction is
+      // exact, so the nanoseconds are the nearest ones and read back to the same double.
+      const double stamp = trajectory.stamp(i);
+      const double whole = std::floor(stamp);
+      if (!(std::abs(whole) < 9.2e9))
+        throw_input_error(path.string(), "stamp " + format_exact(stamp) +
+                                             " s is beyond int64 nanoseconds (about 292 years)");
+      const long long ns = (long long)(whole)*kPerSecond + std::llround((stamp - whole) * 1e9);
+      Eigen::Quaterniond q = trajectory.orientation(i);
+      if (q.w() < 0) q.coeffs() = -q.coeffs();
+      const Eigen::Vector3d& t = trajectory.position(i);
+      out << ns;
+      for (double v : {t.x(), t.y(), t.z(), q.w(), q.x(), q.y(), q.z()}) out << ',' << format_exact(v);
+      out << '\n';
+    }
+  });
 }
 
 }  // namespace slamkit

@@ -16,6 +16,12 @@ namespace slamkit {
 TrajectoryFile read_euroc_csv(const std::filesystem::path& path,
                               const TrajectoryReadOptions& options = {});
 
+// Writes `trajectory` as an ASL CSV file with its header, each stamp as the nanosecond nearest
+// to it, which reads back to the same stamp. (A double holds an epoch stamp to about 0.24 us, so
+// a file's nanoseconds read and written again are not kept digit for digit.) InputError naming
+// the file for a stamp beyond int64 nanoseconds.
+void write_euroc_csv(const std::filesystem::path& path, const Trajectory& trajectory);
+
 // The field as an integer count of nanoseconds, or nullopt when it is not one; `overflow` set
 // when it is an integer beyond int64. Shared with format detection.
 std::optional<long long> parse_nanoseconds(std::string_view text, bool* overflow = nullptr);

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/number_format.h"
+#include "io/atomic_file.h"
 #include "io/pose_rows.h"
 
 namespace slamkit {
@@ -87,6 +89,24 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
                       "stamp " + std::to_string(index + 1) + " has no pose: " + name +
                           " holds " + std::to_string(index) + " poses");
   return rows.finish(options.duplicates, "kitti");
+}
+
+void write_kitti_poses(const std::filesystem::path& path, const Trajectory& trajectory,
+                       const std::optional<std::filesystem::path>& times) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  write_file_atomically(path, [&](std::ostream& out) {
+    for (size_t i = 0; i < trajectory.size(); ++i) {
+      const Eigen::Matrix3d R = trajectory.orientation(i).toRotationMatrix();
+      const Eigen::Vector3d& t = trajectory.position(i);
+      for (int r = 0; r < 3; ++r)
+        out << format_exact(R(r, 0)) << ' ' << format_exact(R(r, 1)) << ' '
+            << format_exact(R(r, 2)) << ' ' << format_exact(t(r)) << (r < 2 ? ' ' : '\n');
+    }
+  });
+  if (!times) return;
+  write_file_atomically(*times, [&](std::ostream& out) {
+    for (size_t i = 0; i < trajectory.size(); ++i) out << format_exact(trajectory.stamp(i)) << '\n';
+  });
 }
 
 }  // namespace slamkit

@@ -18,4 +18,11 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
                                 const std::optional<std::filesystem::path>& times,
                                 const TrajectoryReadOptions& options = {});
 
+// Writes `trajectory` as a KITTI pose file (each rotation as its matrix, every number in its
+// shortest exact form) and, when `times` is given, its stamps as a times.txt; so that
+// read_kitti_poses(path, times) gives the same stamps and positions back, and the rotations to
+// rounding.
+void write_kitti_poses(const std::filesystem::path& path, const Trajectory& trajectory,
+                       const std::optional<std::filesystem::path>& times = std::nullopt);
+
 }  // namespace slamkit

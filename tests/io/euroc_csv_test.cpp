@@ -25,6 +25,31 @@ void expect_error(const fs::path& path, const std::string& fragment) {
   }
 }
 
+// A double holds an epoch stamp to about 0.24 us, so the recorded nanoseconds are not kept digit
+// for digit: the writer puts the nanosecond nearest to each stamp read, which reads back to the
+// same stamp.
+TEST(EurocCsv, AFileWrittenFromWhatWasReadReadsBackToTheSameStampsAndPoses) {
+  const fs::path dir = test::temp_dir("euroc_write");
+  const TrajectoryFile read = read_euroc_csv(write_text(
+      dir, "in.csv",
+      kHeader + "1403636580838555648,1,2,3,0.5,0.5,0.5,0.5\n"
+                "1403636580843555328,4.25,5,6,0,0,0,1\n"
+                "1403636580848555520,-0.001,0,1e-3,0.5,-0.5,0.5,-0.5\n"));
+  write_euroc_csv(dir / "sub" / "out.csv", read.trajectory);
+  const std::string text = test::read_text(dir / "sub" / "out.csv");
+  EXPECT_EQ(text.substr(0, text.find('\n', text.find('\n') + 1) + 1),
+            "#timestamp [ns],p_RS_R_x [m],p_RS_R_y [m],p_RS_R_z [m],q_RS_w [],q_RS_x [],"
+            "q_RS_y [],q_RS_z []\n"
+            "1403636580838555574,1,2,3,0.5,0.5,0.5,0.5\n");  // 74 ns from the file's, one double
+  const TrajectoryFile back = read_euroc_csv(dir / "sub" / "out.csv");
+  ASSERT_EQ(back.trajectory.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back.trajectory.stamp(i), read.trajectory.stamp(i));
+    EXPECT_EQ(back.trajectory.position(i), read.trajectory.position(i));
+    EXPECT_EQ(back.trajectory.orientation(i).coeffs(), read.trajectory.orientation(i).coeffs());
+  }
+}
+
 TEST(EurocCsv, ReadsKnownPosesWithWFirstQuaternionsAndNanosecondStamps) {
   const fs::path dir = test::temp_dir("euroc");
   // The groundtruth's 17 columns: velocity and biases after the quaternion are ignored.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "core/error.h"
 #include "support/test_data.h"
@@ -54,6 +55,25 @@ TEST(KittiPoses, TakesStampsFromTimesFile) {
   ASSERT_EQ(f.trajectory.size(), 2u);
   EXPECT_EQ(f.trajectory.stamp(0), 0.0);
   EXPECT_EQ(f.trajectory.stamp(1), 1.036742e-01);
+}
+
+TEST(KittiPoses, AWrittenFileAndItsTimesReadBackAsTheyWere) {
+  const fs::path dir = test::temp_dir("kitti_write");
+  const TrajectoryFile read =
+      read_kitti_poses(write_text(dir, "p.txt", std::string(kIdentityAt123) + kQuarterTurnZ),
+                       write_text(dir, "times.txt", "0.0\n0.1036742\n"));
+  write_kitti_poses(dir / "out" / "p.txt", read.trajectory, dir / "out" / "times.txt");
+  // The identity's rotation is exact; the quarter turn's passes through a quaternion.
+  EXPECT_EQ(test::read_text(dir / "out" / "p.txt").substr(0, std::strlen(kIdentityAt123)),
+            kIdentityAt123);
+  EXPECT_EQ(test::read_text(dir / "out" / "times.txt"), "0\n0.1036742\n");
+  const TrajectoryFile back = read_kitti_poses(dir / "out" / "p.txt", dir / "out" / "times.txt");
+  ASSERT_EQ(back.trajectory.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.trajectory.stamp(i), read.trajectory.stamp(i));
+    EXPECT_EQ(back.trajectory.position(i), read.trajectory.position(i));
+    EXPECT_TRUE(back.trajectory.orientation(i).isApprox(read.trajectory.orientation(i), 1e-15));
+  }
 }
 
 TEST(KittiPoses, HostileFilesNameFileAndLine) {

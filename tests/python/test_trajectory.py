@@ -1,4 +1,4 @@
-"""slamkit.Trajectory: arrays in and out, TUM files read and written."""
+"""slamkit.Trajectory: arrays in and out, TUM, KITTI and EuRoC files read and written."""
 import numpy as np
 import pytest
 
@@ -115,6 +115,28 @@ def test_kitti_and_euroc_files_read_as_the_tum_file_of_the_same_poses(tmp_path):
     np.testing.assert_array_equal(by_index.stamps, np.arange(20))
     with pytest.raises(ValueError, match="unknown trajectory format 'ply'"):
         slamkit.read_trajectory(kitti, format="ply")
+
+
+def test_kitti_and_euroc_files_written_read_back(tmp_path):
+    stamps, positions, quaternions = helix()
+    t = slamkit.Trajectory(1403715273.262142976 + stamps, positions=positions,
+                           quaternions=quaternions)
+    t.write(tmp_path / "kitti" / "poses.txt", format="kitti", times=tmp_path / "kitti" / "times.txt")
+    t.write(tmp_path / "data.csv", format="euroc")
+    # The nanosecond nearest to the stored stamp (a double holds it to about 0.24 us).
+    assert (tmp_path / "data.csv").read_text().startswith(
+        "#timestamp [ns],p_RS_R_x [m],p_RS_R_y [m],p_RS_R_z [m],q_RS_w [],q_RS_x [],q_RS_y [],"
+        "q_RS_z []\n%d,1,0,0,1,0,0,0\n" % (1403715273 * 10**9 + 262142897))
+    for back in [slamkit.read_trajectory(tmp_path / "kitti" / "poses.txt",
+                                         times=tmp_path / "kitti" / "times.txt"),
+                 slamkit.read_trajectory(tmp_path / "data.csv")]:
+        np.testing.assert_array_equal(back.stamps, t.stamps)
+        np.testing.assert_array_equal(back.positions, t.positions)
+        np.testing.assert_allclose(back.poses, t.poses, rtol=0, atol=1e-15)
+    with pytest.raises(ValueError, match="times"):
+        t.write(tmp_path / "t.csv", format="euroc", times=tmp_path / "times.txt")
+    with pytest.raises(ValueError, match="comment"):
+        t.write(tmp_path / "p.txt", comment="a helix", format="kitti")
 
 
 def test_bad_file_raises_value_error_with_file_and_line(tmp_path):
