@@ -104,6 +104,7 @@ void write_kitti_poses(const std::filesystem::path& path, const Trajectory& traj
     }
   });
   if (!times) return;
+  if (times->has_parent_path()) std::filesystem::create_directories(times->parent_path());
   write_file_atomically(*times, [&](std::ostream& out) {
     for (size_t i = 0; i < trajectory.size(); ++i) out << format_exact(trajectory.stamp(i)) << '\n';
   });

@@ -62,12 +62,14 @@ TEST(KittiPoses, AWrittenFileAndItsTimesReadBackAsTheyWere) {
   const TrajectoryFile read =
       read_kitti_poses(write_text(dir, "p.txt", std::string(kIdentityAt123) + kQuarterTurnZ),
                        write_text(dir, "times.txt", "0.0\n0.1036742\n"));
-  write_kitti_poses(dir / "out" / "p.txt", read.trajectory, dir / "out" / "times.txt");
+  // The times file in a folder of its own, which does not exist yet.
+  write_kitti_poses(dir / "out" / "p.txt", read.trajectory, dir / "out" / "t" / "times.txt");
   // The identity's rotation is exact; the quarter turn's passes through a quaternion.
   EXPECT_EQ(test::read_text(dir / "out" / "p.txt").substr(0, std::strlen(kIdentityAt123)),
             kIdentityAt123);
-  EXPECT_EQ(test::read_text(dir / "out" / "times.txt"), "0\n0.1036742\n");
-  const TrajectoryFile back = read_kitti_poses(dir / "out" / "p.txt", dir / "out" / "times.txt");
+  EXPECT_EQ(test::read_text(dir / "out" / "t" / "times.txt"), "0\n0.1036742\n");
+  const TrajectoryFile back =
+      read_kitti_poses(dir / "out" / "p.txt", dir / "out" / "t" / "times.txt");
   ASSERT_EQ(back.trajectory.size(), 2u);
   for (size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(back.trajectory.stamp(i), read.trajectory.stamp(i));
