@@ -22,6 +22,7 @@ struct SweepArgs {
   std::string data, backend = "local";
   int jobs = 1, threads = 0, index = 0;
   bool resubmit_missing = false;
+  bool allow_incomplete = false;
   sweep::SlurmOptions slurm;
 };
 
@@ -123,18 +124,24 @@ const bool kRegistered = register_command([](CLI::App& root) {
   });
 
   CLI::App* status = cmd->add_subcommand(
-      "status", "Jobs done, pending, running, failed and missing (run folders, squeue, sacct)");
+      "status", "Jobs done, pending, running, requeued, failed and missing (run folders, squeue, sacct)");
   status->add_option("dir", args->dir, "Sweep folder")->required();
   status->callback(
       [args] { finish([&] { return sweep::print_status(args->dir, environment(*args)); }); });
 
   CLI::App* collect = cmd->add_subcommand(
       "collect",
-      "Merge the finished runs into report.md, report.html, runs.csv and the ATE heatmap; exit 1 "
-      "while runs are missing");
+      "Merge the runs into report.md, report.html, runs.csv and the ATE heatmap; while jobs "
+      "are not done it names them and exits 1 (merging only with --allow-incomplete)");
   collect->add_option("dir", args->dir, "Sweep folder")->required();
-  collect->callback(
-      [args] { finish([&] { return sweep::collect_sweep(args->dir, environment(*args)); }); });
+  collect->add_flag("--allow-incomplete", args->allow_incomplete,
+                    "Merge the finished runs although some jobs are not done (exit code 1 still "
+                    "says so)");
+  collect->callback([args] {
+    finish([&] {
+      return sweep::collect_sweep(args->dir, args->allow_incomplete, environment(*args));
+    });
+  });
 });
 
 }  // namespace

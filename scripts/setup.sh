@@ -8,9 +8,9 @@
 #                               # sanitizer build (scripts/test.sh asks for them under CI)
 #   --browser                   # also Chromium, for the browser test of the report page
 #                               # (tests/report; asked for by scripts/test.sh)
-#   --with-slurm                # also Slurm, slurmdbd, munge and MariaDB's server binary, for
-#                               # the loopback Slurm test (scripts/slurm_loopback.sh; asked
-#                               # for by scripts/test.sh under CI)
+#   --with-slurm                # also Slurm, slurmdbd, munge, MariaDB's server binary and
+#                               # iproute2, for the Slurm test cluster (scripts/slurm_cluster.sh,
+#                               # scripts/slurm_faults.sh; asked for by scripts/test.sh under CI)
 #   --packages-only             # install, do not build
 # Environment: SLAMKIT_BUILD_DIR (default: build/ in the repository).
 set -euo pipefail
@@ -59,8 +59,9 @@ if $browser; then
 fi
 if $with_slurm; then
   # A whole Slurm on this machine: controller, node daemon, accounting daemon (sacct needs it)
-  # with the MariaDB server it stores into, and munge for authentication.
-  packages+=(slurm-wlm slurmdbd munge mariadb-server-core mariadb-client-core)
+  # with the MariaDB server it stores into, munge for authentication, and iproute2 for the
+  # test cluster's nodes (network namespaces).
+  packages+=(slurm-wlm slurmdbd munge mariadb-server-core mariadb-client-core iproute2)
 fi
 
 missing=()

@@ -5,7 +5,7 @@
 # e.g. `scripts/test.sh -L unit`.
 # Real-data tests read SLAMKIT_DATA (a folder with the TUM sequences and trajectories); without
 # it they are skipped with a message, except under CI=true where they fail. The same goes for the
-# loopback Slurm test.
+# Slurm fault test.
 # Under CI=true setup also installs the test tools (clang and libFuzzer, Slurm) and builds with
 # warnings as errors, and after ctest every unit test runs under ASan+UBSan (scripts/sanitize.sh)
 # and a short fuzz pass goes over every parser (scripts/fuzz.sh, SLAMKIT_CI_FUZZ_SECONDS per

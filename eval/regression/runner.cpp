@@ -1,7 +1,5 @@
 #include "eval/regression/runner.h"
 
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +15,7 @@
 #include "eval/metrics/metrics_json.h"
 #include "eval/regression/baseline.h"
 #include "eval/regression/process.h"
+#include "eval/regression/run_folder.h"
 #include "settings/settings_yaml.h"
 
 namespace slamkit::regress {
@@ -45,9 +44,12 @@ void parallel_for(size_t n, int jobs, Work work) {
   for (std::thread& t : threads) t.join();
 }
 
-// Writes via a temporary file and a rename, so the file is either whole or absent.
+// Writes via a temporary file and a rename, so the file is either whole or absent. The
+// temporary is this process's own: attempts of one job on several machines may write the same
+// file (the job's settings) at once.
 void write_atomically(const fs::path& file, const std::string& text) {
-  const fs::path temp = file.string() + ".tmp";
+  fs::create_directories(file.parent_path());
+  const fs::path temp = file.string() + "." + host_and_pid() + ".tmp";
   {
     std::ofstream out(temp);
     out << text;
@@ -72,12 +74,6 @@ struct SequenceJob {
   fs::path folder;
   std::string error;
 };
-
-std::string host_and_pid() {
-  char host[256] = "host";
-  gethostname(host, sizeof host - 1);
-  return std::string(host) + "." + std::to_string(getpid());
-}
 
 void render_synthetic(SequenceJob& job, const RunnerOptions& options, int threads) {
   const SequenceSource& s = job.source;
@@ -137,19 +133,49 @@ std::string read_text(const fs::path& file) {
   return text;
 }
 
+// Whether `dir` holds a finished run of `fingerprint` (whole, as `slamkit run` wrote it); if so
+// its marker's time and duration go into `run`. A run folder cut short after it was finished is
+// reported under `label` (when not empty).
+bool is_finished_run(const fs::path& dir, const std::string& fingerprint, EntryRun& run,
+                     const std::string& label = "") {
+  const fs::path marker = dir / kEntryMarker;
+  if (!fs::exists(marker)) return false;
+  try {
+    const json done = json::parse(read_text(marker));
+    if (done.value("fingerprint", "") != fingerprint) return false;
+    eval::require_complete_run(dir);  // a later `slamkit run` there may have been cut
+    run.ok = run.reused = true;
+    run.finished = done.value("finished", "");
+    run.seconds = done.value("seconds", 0.0);
+    return true;
+  } catch (const json::exception&) {
+    return false;  // a damaged marker: the run is done again
+  } catch (const InputError& e) {
+    if (!label.empty()) say("run again   %s: %s\n", label, e.what());
+    return false;
+  }
+}
+
+// The attempt that published the run folder `dir` (its marker's "attempt"), or "".
+std::string published_attempt(const fs::path& dir) {
+  const json done = json::parse(read_text(dir / kEntryMarker), nullptr, false);
+  return done.is_object() ? done.value("attempt", "") : "";
+}
+
 void run_request(const RunRequest& request, const fs::path& sequence,
                  const std::string& binary_hash, const RunnerOptions& options, int threads,
                  EntryRun& run) {
   const SuiteEntry& entry = *request.entry;
   run.dir = request.dir;
-  std::vector<std::string> args = {"run",       sequence.string(),      "--out", run.dir.string(),
+  const fs::path attempt = attempt_folder(run.dir);
+  std::vector<std::string> args = {"run",       sequence.string(),      "--out", attempt.string(),
                                    "--threads", std::to_string(threads)};
   // What the run depends on besides the sequence: the settings and the executable.
   std::string fingerprint =
       entry.sequence.describe() + " | " + sequence.string() + " | slamkit " + binary_hash;
   if (entry.has_overrides) {
     const fs::path& settings = request.settings_file;
-    write_settings_yaml(settings, entry.settings);
+    write_atomically(settings, settings_yaml_text(entry.settings));
     fingerprint += " | settings " + eval::fnv1a64_file(settings);
     args.insert(args.end(), {"--settings", settings.string()});
   }
@@ -161,47 +187,49 @@ void run_request(const RunRequest& request, const fs::path& sequence,
   if (!entry.sequence.calibration.empty())
     args.insert(args.end(), {"--calibration", entry.sequence.calibration.string()});
 
-  const fs::path marker = run.dir / kEntryMarker;
-  if (!options.force && fs::exists(marker)) {
-    try {
-      const json done = json::parse(read_text(marker));
-      if (done.value("fingerprint", "") == fingerprint) {
-        eval::require_complete_run(run.dir);  // a later `slamkit run` there may have been cut
-        run.ok = run.reused = true;
-        run.finished = done.value("finished", "");
-        run.seconds = done.value("seconds", 0.0);
-        say("reuse       %s (finished %s)\n", request.label, run.finished);
-        return;
-      }
-    } catch (const json::exception&) {
-      // A damaged marker: the run is done again.
-    } catch (const InputError& e) {
-      say("run again   %s: %s\n", entry.name, e.what());
-    }
+  if (!options.force && is_finished_run(run.dir, fingerprint, run, entry.name)) {
+    say("reuse       %s (finished %s)\n", request.label, run.finished);
+    return;
   }
-  fs::remove_all(run.dir);
-  fs::create_directories(run.dir);
-  const fs::path log = run.dir / "run.log";
-  say("run         %s (log %s)\n", request.label, log.string());
+  // A finished run found at publication that was not there now was published by another
+  // attempt of this job meanwhile (under --force the one there now is replaced).
+  const std::string replaced = published_attempt(run.dir);
+  if (const int stale = remove_stale_attempts(run.dir))
+    say("clean       %s: %s attempt folder(s) of a dead attempt removed\n", request.label,
+        std::to_string(stale));
+  fs::create_directories(attempt);
+  say("run         %s (log %s)\n", request.label, (attempt / "run.log").string());
   const auto start = std::chrono::steady_clock::now();
-  const int code = run_logged(options.slamkit.string(), args, log);
+  const int code = run_logged(options.slamkit.string(), args, attempt / "run.log");
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (code != 0) {
-    run.error =
-        "slamkit run exited with code " + std::to_string(code) + " (see " + log.string() + ")";
+    keep_failed_attempt(attempt, run.dir);
+    run.error = "slamkit run exited with code " + std::to_string(code) + " (see " +
+                (failed_folder(run.dir) / "run.log").string() + ")";
     say("FAILED      %s: %s\n", request.label, run.error);
     return;
   }
   run.ok = true;
   run.finished = utc_now_iso();
-  json done = {{"entry", entry.name},
-               {"fingerprint", fingerprint},
-               {"finished", run.finished},
-               {"seconds", run.seconds},
-               {"command", args}};
-  write_atomically(marker, done.dump(2) + "\n");
+  const json done = {{"entry", entry.name},
+                     {"fingerprint", fingerprint},
+                     {"finished", run.finished},
+                     {"seconds", run.seconds},
+                     {"attempt", attempt.filename().string()},
+                     {"command", args}};
+  write_atomically(attempt / kEntryMarker, done.dump(2) + "\n");
+  const Publication published = publish_attempt(attempt, run.dir, [&](const fs::path& dir) {
+    EntryRun other;
+    return is_finished_run(dir, fingerprint, other) && published_attempt(dir) != replaced;
+  });
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f", run.seconds);
+  if (published == Publication::kPublishedByAnother) {
+    is_finished_run(run.dir, fingerprint, run);
+    say("duplicate   %s: another attempt published it first; this one's copy is discarded\n",
+        request.label);
+    return;
+  }
   say("done        %s in %s s\n", request.label, seconds);
 }
 

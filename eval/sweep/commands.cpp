@@ -38,6 +38,8 @@ void print_unfinished(const Plan& plan, const SweepStatus& status) {
                 plan.jobs[t.index].label().c_str());
     if (!t.slurm.state.empty())
       std::printf("  %s (%s)", t.slurm.state.c_str(), t.slurm.job.c_str());
+    if (t.slurm.restarts > 0)
+      std::printf("  requeued %d time%s", t.slurm.restarts, t.slurm.restarts == 1 ? "" : "s");
     if (!t.log.empty()) std::printf("  log %s", t.log.c_str());
     std::printf("\n");
   }
@@ -46,7 +48,8 @@ void print_unfinished(const Plan& plan, const SweepStatus& status) {
 std::string counts_text(const SweepStatus& s) {
   std::string text;
   for (const TaskCategory c : {TaskCategory::kDone, TaskCategory::kPending, TaskCategory::kRunning,
-                               TaskCategory::kFailed, TaskCategory::kMissing})
+                               TaskCategory::kRequeued, TaskCategory::kFailed,
+                               TaskCategory::kMissing})
     text += (text.empty() ? "" : ", ") + std::to_string(s.count(c)) + " " + category_name(c);
   return text;
 }
@@ -158,9 +161,20 @@ int print_status(const fs::path& dir, const SweepEnvironment& env) {
   return 0;
 }
 
-int collect_sweep(const fs::path& dir, const SweepEnvironment& env) {
+int collect_sweep(const fs::path& dir, bool allow_incomplete, const SweepEnvironment& env) {
   const Plan plan = load_plan(dir, env.suite);
-  const SweepResults results = collect_results(plan, sweep_status(plan));
+  const SweepStatus status = sweep_status(plan);
+  if (status.count(TaskCategory::kDone) != int(plan.jobs.size()) && !allow_incomplete) {
+    std::printf("INCOMPLETE  %d of %zu runs finished: %s; nothing merged\n",
+                status.count(TaskCategory::kDone), plan.jobs.size(), counts_text(status).c_str());
+    print_unfinished(plan, status);
+    std::printf("then        wait for them, or resubmit the failed and missing ones (slamkit sweep "
+                "run %s --backend slurm --resubmit-missing); `collect --allow-incomplete` merges "
+                "what there is\n",
+                dir.c_str());
+    return 1;
+  }
+  const SweepResults results = collect_results(plan, status);
   const SweepReportFiles files = write_sweep_report(results);
   for (const Ranking& k : results.rankings) {
     const VariantScore& best = k.scores.front();

@@ -29,6 +29,9 @@ int run_slurm(const std::filesystem::path& dir, const SlurmOptions& options, boo
 // One job, as an array task runs it.
 int run_task(const std::filesystem::path& dir, int index, int threads, const SweepEnvironment& env);
 int print_status(const std::filesystem::path& dir, const SweepEnvironment& env);
-int collect_sweep(const std::filesystem::path& dir, const SweepEnvironment& env);
+// Merges the finished runs into DIR's report; an incomplete sweep only with allow_incomplete
+// (otherwise it names the jobs that are not done and merges nothing).
+int collect_sweep(const std::filesystem::path& dir, bool allow_incomplete,
+                  const SweepEnvironment& env);
 
 }  // namespace slamkit::sweep

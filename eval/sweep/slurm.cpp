@@ -55,6 +55,9 @@ std::string array_script(const Plan& plan, const std::string& array, const Slurm
   s += "#SBATCH --mem=" + options.memory + "\n";
   s += "#SBATCH --cpus-per-task=" + std::to_string(options.cpus) + "\n";
   s += "#SBATCH --output=" + (slurm_dir(dir) / "logs" / "%A_%a.log").string() + "\n";
+  // Requeued when its node fails or it is preempted; a requeued attempt appends to the log.
+  s += "#SBATCH --requeue\n";
+  s += "#SBATCH --open-mode=append\n";
   if (!options.partition.empty()) s += "#SBATCH --partition=" + options.partition + "\n";
   s += "exec " + quoted(fs::absolute(slamkit).string()) + " sweep task " + quoted(dir.string()) +
        " \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-1}\"\n";
@@ -167,7 +170,7 @@ ArrayStates parse_squeue(const std::string& text) {
   for (const std::string& line : split(text, '\n')) {
     const std::vector<std::string> f = split(line, '|');
     if (f.size() == 3 && is_number(f[0]) && is_number(f[1]))
-      states[f[0]][std::stoi(f[1])] = first_word(f[2]);
+      states[f[0]][std::stoi(f[1])].state = first_word(f[2]);
   }
   return states;
 }
@@ -178,7 +181,11 @@ ArrayStates parse_sacct(const std::string& text) {
     const std::vector<std::string> f = split(line, '|');
     std::string job;
     int index = 0;
-    if (f.size() >= 2 && split_task_id(f[0], job, index)) states[job][index] = first_word(f[1]);
+    if (f.size() < 2 || !split_task_id(f[0], job, index)) continue;
+    // Attempts are listed oldest first: the last is the task's state now.
+    const auto [task, first] = states[job].try_emplace(index);
+    if (!first) ++task->second.restarts;
+    task->second.state = first_word(f[1]);
   }
   return states;
 }
@@ -193,8 +200,10 @@ ArrayStates parse_scontrol(const std::string& text) {
       if (equals != std::string::npos) fields[word.substr(0, equals)] = word.substr(equals + 1);
     }
     const std::string job = fields["ArrayJobId"], task = fields["ArrayTaskId"];
-    if (is_number(job) && is_number(task) && !fields["JobState"].empty())
-      states[job][std::stoi(task)] = fields["JobState"];
+    if (!is_number(job) || !is_number(task) || fields["JobState"].empty()) continue;
+    TaskState& state = states[job][std::stoi(task)];
+    state.state = fields["JobState"];
+    if (is_number(fields["Restarts"])) state.restarts = std::stoi(fields["Restarts"]);
   }
   return states;
 }
@@ -205,7 +214,7 @@ SlurmStates query_slurm(const std::vector<Submission>& submissions) {
   // Finished tasks first, live ones over them: a live state is the newest word.
   ArrayStates ended;
   if (auto sacct = regress::capture_output(
-          "sacct", {"-n", "-P", "-X", "-j", joined_ids(submissions), "-o", "JobID,State"})) {
+          "sacct", {"-n", "-P", "-X", "-D", "-j", joined_ids(submissions), "-o", "JobID,State"})) {
     ended = parse_sacct(*sacct);
     result.source = "squeue and sacct";
   } else {
@@ -224,8 +233,11 @@ SlurmStates query_slurm(const std::vector<Submission>& submissions) {
         const auto job = states->find(s.job_id);
         if (job == states->end()) continue;
         const auto task = job->second.find(index);
-        if (task != job->second.end())
-          result.tasks[index] = {task->second, s.job_id + "_" + std::to_string(index)};
+        if (task == job->second.end()) continue;
+        TaskState& state = result.tasks[index];
+        state.state = task->second.state;  // the live word over the accounted one
+        state.restarts = std::max(state.restarts, task->second.restarts);
+        state.job = s.job_id + "_" + std::to_string(index);
       }
     }
   }

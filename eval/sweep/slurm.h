@@ -40,9 +40,11 @@ Submission submit_array(const Plan& plan, const std::vector<int>& indices,
 std::vector<Submission> read_submissions(const std::filesystem::path& dir);
 
 // Slurm's word on an array task: its state (RUNNING, PENDING, COMPLETED, CANCELLED, TIMEOUT,
-// ...) and the job it ran as, "12_3".
+// ...), how often Slurm requeued it (a node failed under it, it was preempted) and the job it
+// runs as, "12_3".
 struct TaskState {
   std::string state;
+  int restarts = 0;
   std::string job;
 };
 
@@ -55,13 +57,14 @@ struct SlurmStates {
 SlurmStates query_slurm(const std::vector<Submission>& submissions);
 
 // The parsers behind query_slurm, over the commands' text:
-//   squeue -h -r --me -o '%F|%K|%T'            12|3|RUNNING
-//   sacct -n -P -X -j ID,... -o JobID,State    12_3|CANCELLED by 0
-//   scontrol -o show job ID                    JobId=15 ArrayJobId=12 ArrayTaskId=3 ...
-//   JobState=...
-// Each gives array job id -> index -> state; lines of other jobs or of pending ranges are
-// passed over.
-using ArrayStates = std::map<std::string, std::map<int, std::string>>;
+//   squeue -h -r --me -o '%F|%K|%T'              12|3|RUNNING
+//   sacct -n -P -X -D -j ID,... -o JobID,State   12_3|NODE_FAIL
+//                                                12_3|PENDING   (-D: one line per attempt)
+//   scontrol -o show job ID                      JobId=15 ArrayJobId=12 ArrayTaskId=3 ...
+//   JobState=... Restarts=1
+// Each gives array job id -> index -> state (the job left empty); lines of other jobs or of
+// pending ranges are passed over.
+using ArrayStates = std::map<std::string, std::map<int, TaskState>>;
 ArrayStates parse_squeue(const std::string& text);
 ArrayStates parse_sacct(const std::string& text);
 ArrayStates parse_scontrol(const std::string& text);

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "eval/regression/run_folder.h"
 #include "eval/regression/runner.h"
 
 namespace slamkit::sweep {
@@ -16,14 +17,24 @@ bool is_one_of(const std::string& state, std::initializer_list<const char*> stat
   return false;
 }
 
-// run.json's status, "started" for a run folder without one, "" without a run folder.
-std::string folder_status(const fs::path& run_dir) {
-  if (!fs::exists(run_dir)) return "";
-  std::ifstream in(run_dir / "run.json");
+// run.json's status, "started" for a folder without one.
+std::string run_json_status(const fs::path& folder) {
+  std::ifstream in(folder / "run.json");
   if (!in) return "started";
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   const nlohmann::json status = j.is_object() ? j.value("status", nlohmann::json()) : nullptr;
   return status.is_string() ? status.get<std::string>() : "started";
+}
+
+// Where an unpublished job's run is written or was kept, or "": an attempt that is running,
+// else any attempt (one that died), else the last failed attempt.
+fs::path unpublished_folder(const fs::path& run_dir) {
+  const std::vector<fs::path> attempts = regress::attempt_folders(run_dir);
+  for (const fs::path& attempt : attempts)
+    if (run_json_status(attempt) == "running") return attempt;
+  if (!attempts.empty()) return attempts.front();
+  const fs::path failed = regress::failed_folder(run_dir);
+  return fs::exists(failed) ? failed : fs::path();
 }
 
 }  // namespace
@@ -36,6 +47,8 @@ const char* category_name(TaskCategory category) {
       return "pending";
     case TaskCategory::kRunning:
       return "running";
+    case TaskCategory::kRequeued:
+      return "requeued";
     case TaskCategory::kFailed:
       return "failed";
     case TaskCategory::kMissing:
@@ -44,11 +57,12 @@ const char* category_name(TaskCategory category) {
   return "?";
 }
 
-TaskCategory classify(bool finished, const std::string& folder, const std::string& slurm) {
+TaskCategory classify(bool finished, const std::string& folder, const TaskState& slurm_state) {
+  const std::string& slurm = slurm_state.state;
   if (finished) return TaskCategory::kDone;
-  if (is_one_of(slurm, {"PENDING", "REQUEUED", "REQUEUE_HOLD", "REQUEUE_FED", "CONFIGURING",
-                        "RESV_DEL_HOLD"}))
-    return TaskCategory::kPending;
+  if (is_one_of(slurm, {"REQUEUED", "REQUEUE_HOLD", "REQUEUE_FED"})) return TaskCategory::kRequeued;
+  if (is_one_of(slurm, {"PENDING", "CONFIGURING", "RESV_DEL_HOLD"}))
+    return slurm_state.restarts > 0 ? TaskCategory::kRequeued : TaskCategory::kPending;
   if (is_one_of(slurm, {"RUNNING", "COMPLETING", "STAGE_OUT", "SIGNALING", "RESIZING", "SUSPENDED",
                         "STOPPED"}))
     return TaskCategory::kRunning;
@@ -83,8 +97,10 @@ SweepStatus sweep_status(const Plan& plan) {
     const fs::path run_dir = plan.dir / job.run_folder;
     if (const auto found = slurm.tasks.find(job.index); found != slurm.tasks.end())
       t.slurm = found->second;
-    t.category = classify(fs::exists(run_dir / regress::kEntryMarker), folder_status(run_dir),
-                          t.slurm.state);
+    const bool published = fs::exists(run_dir / regress::kEntryMarker);
+    const fs::path unpublished = published ? fs::path() : unpublished_folder(run_dir);
+    t.category =
+        classify(published, unpublished.empty() ? "" : run_json_status(unpublished), t.slurm);
     const size_t underscore = t.slurm.job.find('_');
     const fs::path slurm_log =
         underscore == std::string::npos
@@ -92,8 +108,8 @@ SweepStatus sweep_status(const Plan& plan) {
             : task_log(plan.dir, t.slurm.job.substr(0, underscore), job.index);
     if (!slurm_log.empty() && fs::exists(slurm_log))
       t.log = slurm_log;
-    else if (fs::exists(run_dir / "run.log"))
-      t.log = run_dir / "run.log";
+    else if (!unpublished.empty() && fs::exists(unpublished / "run.log"))
+      t.log = unpublished / "run.log";
     status.tasks.push_back(t);
   }
   return status;

@@ -54,7 +54,7 @@ TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
   EXPECT_NE(output.find("4 jobs: 4 finished (0 reused), 0 failed"), std::string::npos) << output;
 
   ASSERT_EQ(test::run_slamkit("sweep status " + out.string(), &output), 0) << output;
-  EXPECT_NE(output.find("4 jobs: 4 done, 0 pending, 0 running, 0 failed, 0 missing"),
+  EXPECT_NE(output.find("4 jobs: 4 done, 0 pending, 0 running, 0 requeued, 0 failed, 0 missing"),
             std::string::npos)
       << output;
 
@@ -85,16 +85,44 @@ TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
   ASSERT_EQ(test::run_slamkit("sweep run " + out.string() + " --jobs 2", &output), 0) << output;
   EXPECT_NE(output.find("4 jobs: 4 finished (4 reused), 0 failed"), std::string::npos) << output;
 
-  // A lost run is reported with what is known of it, and collect fails until it is back.
-  fs::remove_all(out / "runs/num_features-600/desk/seed2");
+  // Every run folder was published whole: no attempt folder or temporary is left.
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(out)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_EQ(name.find(".attempt."), std::string::npos) << e.path();
+    EXPECT_EQ(name.find(".tmp"), std::string::npos) << e.path();
+  }
+
+  // A lost run is named, and collect merges nothing until it is back unless asked.
+  const fs::path lost = out / "runs/num_features-600/desk/seed2";
+  fs::remove_all(lost);
+  fs::remove(out / "report.md");
   EXPECT_EQ(test::run_slamkit("sweep collect " + out.string(), &output), 1) << output;
   EXPECT_NE(output.find("missing     3  num_features-600/desk/seed2"), std::string::npos) << output;
-  EXPECT_NE(output.find("INCOMPLETE  3 of 4 runs"), std::string::npos) << output;
+  EXPECT_NE(output.find("INCOMPLETE  3 of 4 runs finished"), std::string::npos) << output;
+  EXPECT_NE(output.find("nothing merged"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(out / "report.md"));
+  EXPECT_EQ(test::run_slamkit("sweep collect --allow-incomplete " + out.string(), &output), 1)
+      << output;
   EXPECT_NE(test::read_text(out / "report.md").find("## Missing or failed tasks"),
             std::string::npos);
 
+  // A dead attempt left a half-written folder (its node died mid-write): the job's next
+  // attempt removes it and publishes its own run, whole.
+  const fs::path dead = lost.string() + ".attempt.node2.4711";
+  fs::create_directories(dead);
+  std::ofstream(dead / "run.json") << "{\"status\": \"running\"}\n";
+  std::ofstream(dead / "tracking.csv") << "frame,seconds\n0,0.0";
+  std::ofstream(dead / "only_in_the_dead_attempt.txt") << "must not reach the run folder\n";
+  ASSERT_EQ(test::run_slamkit("sweep status " + out.string(), &output), 0) << output;
+  EXPECT_NE(output.find("running     3  num_features-600/desk/seed2"), std::string::npos)
+      << output;
+
   // One job alone, as an array task runs it, with all cores: the same numbers as before.
   ASSERT_EQ(test::run_slamkit("sweep task " + out.string() + " 3", &output), 0) << output;
+  EXPECT_NE(output.find("1 attempt folder(s) of a dead attempt removed"), std::string::npos)
+      << output;
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_FALSE(fs::exists(lost / "only_in_the_dead_attempt.txt"));
   ASSERT_EQ(test::run_slamkit("sweep collect " + out.string(), &output), 0) << output;
   const auto again = read_runs_csv(out / "runs.csv");
   for (const char* metric : {"ate_rmse", "rpe_trans_rmse", "frames_lost", "map_completeness"})
