@@ -192,7 +192,7 @@ CONF
 
   local node_lines="" node_list="node[1-$nodes]" i
   for ((i = 1; i <= nodes; i++)); do
-    node_lines+="NodeName=node$i NodeAddr=$subnet_base.$((10 + i)) CPUs=1 RealMemory=2000 State=UNKNOWN"$'\n'
+    node_lines+="NodeName=node$i NodeAddr=$subnet_base.$((10 + i)) CPUs=1 RealMemory=4000 State=UNKNOWN"$'\n'
   done
   cat >"$state/slurm.conf" <<CONF
 ClusterName=slamkit-test

@@ -74,11 +74,15 @@ running_task() {
     sort -n | sed -n 1p
 }
 has_running_task() { [[ -n "$(running_task "$@")" ]]; }
+# The run folder of job $1 of the plan in $dir.
+run_folder() { awk -F'\t' -v i="$1" '$1 == i {print $5}' "$dir/jobs.tsv"; }
 # The attempt folder of a task still alive (the folder is named after its pid) that already
-# holds run.json: a run in the middle of writing.
+# holds run.json, a run in the middle of writing, and is not one of jobs $2, $3 (already hit).
 live_attempt_with_files() {
-  local attempt
+  local attempt skip_a skip_b
+  skip_a="$1/$(run_folder "$2").attempt." skip_b="$1/$(run_folder "$3").attempt."
   for attempt in $(find "$1/runs" -mindepth 3 -maxdepth 3 -type d -name '*.attempt.*'); do
+    [[ "$attempt" == "$skip_a"* || "$attempt" == "$skip_b"* ]] && continue
     [[ -f "$attempt/run.json" ]] && kill -0 "${attempt##*.}" 2>/dev/null && echo "$attempt" &&
       return 0
   done
@@ -111,8 +115,8 @@ scancel "${job}_${task_b}"
 say "(b) scancel ${job}_${task_b}"
 
 # (c) a third task is SIGKILLed mid-write: the task and the `slamkit run` writing there.
-wait_for 300 "live attempt folder with files" live_attempt_with_files "$dir"
-attempt_c="$(live_attempt_with_files "$dir")"
+wait_for 300 "live attempt folder with files" live_attempt_with_files "$dir" "$task_a" "$task_b"
+attempt_c="$(live_attempt_with_files "$dir" "$task_a" "$task_b")"
 pid_c="${attempt_c##*.}"
 kill -9 "$pid_c" $(pgrep -P "$pid_c") 2>/dev/null || fail "no process $pid_c to kill for $attempt_c"
 say "(c) SIGKILL to task process $pid_c and its children, writing $attempt_c"

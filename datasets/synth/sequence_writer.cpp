@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cinttypes>
 #include <cstdio>
@@ -33,7 +34,33 @@ int64_t stamp_microseconds(int i) {
 std::string describe(const SequenceSpec& spec) {
   return "slamkit synth --preset " + preset_name(spec.preset) + " --frames " +
          std::to_string(spec.frames) + " --seed " + std::to_string(spec.seed) +
-         (spec.kinect ? " --sensor kinect (settings in synthetic.yaml)" : "");
+         (spec.kinect ? " --sensor kinect (settings in synthetic.yaml)" : "") +
+         (spec.first_frames > 0 ? ", its first " + std::to_string(spec.first_frames) + " frames"
+                                : "");
+}
+
+// How many of the frames are written (SequenceSpec::first_frames).
+int written_frames(const SequenceSpec& spec) {
+  return spec.first_frames > 0 ? spec.first_frames : spec.frames;
+}
+
+// The streams up to colour frame k - 1: the depth frames paired with those, and groundtruth up
+// to the last of either (its first stamp at or past it included).
+void keep_first_frames(StreamStamps& s, int k) {
+  if (k >= int(s.colour.size())) return;
+  s.colour.resize(size_t(k));
+  size_t depth_end = 0;
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [c, d] : s.pairs)
+    if (c < k) {
+      pairs.emplace_back(c, d);
+      depth_end = std::max(depth_end, size_t(d) + 1);
+    }
+  s.pairs = pairs;
+  s.depth.resize(std::min(depth_end, s.depth.size()));
+  const int64_t end = std::max(s.colour.back(), s.depth.empty() ? s.colour.back() : s.depth.back());
+  const auto past = std::lower_bound(s.groundtruth.begin(), s.groundtruth.end(), end);
+  s.groundtruth.erase(past == s.groundtruth.end() ? past : past + 1, s.groundtruth.end());
 }
 
 void create_folder(const fs::path& folder) {
@@ -75,7 +102,7 @@ struct ListFiles {
 
 void write_lists(const SequenceSpec& spec) {
   ListFiles lists(spec);
-  for (int i = 0; i < spec.frames; ++i) {
+  for (int i = 0; i < written_frames(spec); ++i) {
     // Depth shares the colour stamp: the images are rendered from the same pose.
     const std::string stamp = frame_stamp_text(i);
     lists.rgb << stamp << " rgb/" << stamp << ".png\n";
@@ -162,7 +189,8 @@ void write_kinect_sequence(const SyntheticScene& scene, const SequenceSpec& spec
                            const std::function<void(size_t)>& on_progress) {
   const KinectSettings& settings = *spec.kinect;
   const ContinuousTrajectory trajectory(spec.preset, spec.frames, spec.seed);
-  const StreamStamps stamps = make_stream_stamps(settings, spec.frames, spec.seed);
+  StreamStamps stamps = make_stream_stamps(settings, spec.frames, spec.seed);
+  keep_first_frames(stamps, written_frames(spec));
   const std::string failed = render_kinect_frames(scene, spec, trajectory, stamps, on_progress);
   if (!failed.empty()) throw InputError(failed);
 
@@ -212,6 +240,9 @@ void check_spec(const SequenceSpec& spec) {
   if (spec.threads < 0)
     throw InputError("--threads: must be 0 (default) or positive, got " +
                      std::to_string(spec.threads));
+  if (spec.first_frames != 0 && (spec.first_frames < 2 || spec.first_frames > spec.frames))
+    throw InputError("first frames: need 2.." + std::to_string(spec.frames) + " (or 0: all), got " +
+                     std::to_string(spec.first_frames));
   if (spec.kinect) check_kinect_settings(*spec.kinect);
 }
 
@@ -224,14 +255,15 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
   create_folder(spec.out / "rgb");
   create_folder(spec.out / "depth");
   if (spec.kinect) return write_kinect_sequence(scene, spec, on_progress);
-  const std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
+  std::vector<Eigen::Isometry3d> poses = make_trajectory(spec.preset, spec.frames, spec.seed);
+  poses.resize(size_t(written_frames(spec)));
   const Camera camera = synthetic_camera();
 
   std::atomic<size_t> done{0};
   std::string failed;  // the first file that could not be written
   const int threads = spec.threads > 0 ? spec.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int i = 0; i < spec.frames; ++i) {
+  for (int i = 0; i < int(poses.size()); ++i) {
     const RenderedFrame frame = render_frame(scene, camera, poses[i], spec.sensor, spec.seed, i);
     const std::string name = frame_stamp_text(i) + ".png";
     const fs::path rgb = spec.out / "rgb" / name, depth = spec.out / "depth" / name;
@@ -252,7 +284,7 @@ void write_sequence(const SyntheticScene& scene, const SequenceSpec& spec,
 
   write_lists(spec);
   Trajectory groundtruth;
-  for (int i = 0; i < spec.frames; ++i) groundtruth.push_back(frame_stamp(i), poses[i]);
+  for (int i = 0; i < int(poses.size()); ++i) groundtruth.push_back(frame_stamp(i), poses[i]);
   write_tum_trajectory(spec.out / "groundtruth.txt", groundtruth,
                        "ground truth trajectory (exact, T_w_c)\n# file: '" + describe(spec) + "'");
   write_revisits(spec.out / "revisits.txt", poses);

@@ -20,6 +20,9 @@ namespace slamkit::synth {
 struct SequenceSpec {
   Preset preset = Preset::kDesk;
   int frames = 600;
+  // Only frames [0, first_frames) of the `frames`-long motion are written (0: all): the start
+  // of a long sequence at its own speed, without rendering the rest.
+  int first_frames = 0;
   uint64_t seed = 1;
   int threads = 0;  // OpenMP threads rendering frames; 0 = OpenMP's default
   std::filesystem::path out;

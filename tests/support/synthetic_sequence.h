@@ -36,15 +36,18 @@ inline std::string renderer_build_key() {
   return key.str();
 }
 
-// Through the ideal sensor or the kinect one with its default settings.
+// Through the ideal sensor or the kinect one with its default settings; with first_frames only
+// the start of the `frames`-long motion (SequenceSpec::first_frames).
 inline std::filesystem::path synthetic_sequence(synth::Preset preset, int frames,
-                                                bool kinect = false, uint64_t seed = 1) {
+                                                bool kinect = false, uint64_t seed = 1,
+                                                int first_frames = 0) {
   namespace fs = std::filesystem;
   const fs::path base = SLAMKIT_TEST_SEQUENCES;
   const fs::path root = base / renderer_build_key();
   const fs::path dir = root / (synth::preset_name(preset) + std::to_string(frames) +
                                (kinect ? "_kinect" : "") +
-                               (seed == 1 ? "" : "_seed" + std::to_string(seed)));
+                               (seed == 1 ? "" : "_seed" + std::to_string(seed)) +
+                               (first_frames ? "_first" + std::to_string(first_frames) : ""));
   if (fs::exists(dir)) return dir;
 
   std::error_code ignored;
@@ -63,6 +66,7 @@ inline std::filesystem::path synthetic_sequence(synth::Preset preset, int frames
     spec.frames = frames;
     spec.out = partial;
     spec.seed = seed;
+    spec.first_frames = first_frames;
     if (kinect) spec.kinect = synth::KinectSettings{};
     synth::write_sequence(synth::make_named_scene(synth::preset_scene(preset)), spec);
     fs::rename(partial, dir);

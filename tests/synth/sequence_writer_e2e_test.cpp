@@ -224,6 +224,58 @@ TEST(SynthSequence, RevisitsListTheFramesThatReturnToAPlace) {
                       frame_stamp_text(0));
 }
 
+// Lines of a list or trajectory file that are not comments.
+std::vector<std::string> data_lines(const fs::path& file) {
+  std::vector<std::string> lines;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#') lines.push_back(line);
+  return lines;
+}
+
+// The first frames of a sequence are those of the whole one, image for image, for both sensors:
+// the motion is the whole sequence's, only the rest is not rendered.
+TEST(SynthSequence, TheFirstFramesAloneAreTheWholeSequencesFirstFrames) {
+  for (const bool kinect : {false, true}) {
+    SCOPED_TRACE(kinect ? "kinect" : "ideal");
+    SequenceSpec spec;
+    spec.preset = Preset::kLoop;
+    spec.frames = 10;
+    if (kinect) spec.kinect = KinectSettings{};
+    spec.out = slamkit::test::temp_dir(kinect ? "first_whole_kinect" : "first_whole");
+    write_sequence(test::shared_scene(spec.preset), spec);
+    const fs::path whole = spec.out;
+    spec.first_frames = 4;
+    spec.out = slamkit::test::temp_dir(kinect ? "first_part_kinect" : "first_part");
+    write_sequence(test::shared_scene(spec.preset), spec);
+    const fs::path part = spec.out;
+
+    const std::vector<std::string> rgb = data_lines(part / "rgb.txt");
+    ASSERT_EQ(rgb.size(), 4u);
+    const std::vector<std::string> all_rgb = data_lines(whole / "rgb.txt");
+    EXPECT_TRUE(std::equal(rgb.begin(), rgb.end(), all_rgb.begin()));
+    for (const char* list : {"depth.txt", "associate.txt", "groundtruth.txt"}) {
+      const std::vector<std::string> some = data_lines(part / list), all = data_lines(whole / list);
+      ASSERT_FALSE(some.empty()) << list;
+      ASSERT_LT(some.size(), all.size()) << list;
+      EXPECT_TRUE(std::equal(some.begin(), some.end(), all.begin())) << list;
+    }
+    EXPECT_EQ(data_lines(part / "associate.txt").size(), 4u);
+    size_t images = 0;
+    for (const char* folder : {"rgb", "depth"})
+      for (const auto& entry : fs::directory_iterator(part / folder)) {
+        EXPECT_TRUE(file_bytes(entry.path()) ==
+                    file_bytes(whole / folder / entry.path().filename()))
+            << entry.path();
+        ++images;
+      }
+    EXPECT_EQ(images, 4 + data_lines(part / "depth.txt").size());
+    // The sequence can be read and its groundtruth covers its frames.
+    const TumSequence sequence = open_sequence(part);
+    EXPECT_EQ(sequence.size(), 4u);
+  }
+}
+
 TEST(SynthSequence, ASceneOtherThanThePresetsIsRefused) {
   SequenceSpec spec;
   spec.preset = Preset::kLong;
@@ -242,6 +294,16 @@ TEST(SynthSequence, BadSpecsAreInputErrorsNamingTheProblem) {
   const fs::path blocker = slamkit::test::temp_dir("bad_out") / "blocker";
   std::ofstream(blocker) << "not a folder";
   spec.frames = 2;
+  spec.first_frames = 3;  // more than the sequence has
+  spec.out = slamkit::test::temp_dir("bad_first_frames");
+  try {
+    write_sequence(test::shared_room(), spec);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("first frames: need 2..2"), std::string::npos)
+        << e.what();
+  }
+  spec.first_frames = 0;
   spec.out = blocker / "sequence";
   try {
     write_sequence(test::shared_room(), spec);
