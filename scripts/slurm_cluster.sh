@@ -36,16 +36,7 @@ names() {
   subnet_base="${subnet%.0}"
 }
 
-# wait_for SECONDS WHAT COMMAND...: polls until COMMAND succeeds.
-wait_for() {
-  local seconds="$1" what="$2"
-  shift 2
-  for _ in $(seq $((seconds * 5))); do
-    if "$@" >/dev/null 2>&1; then return 0; fi
-    sleep 0.2
-  done
-  fail "no $what after $seconds s"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/wait_for.sh"
 
 stop_pid_file() {
   local pid_file="$1" pid

@@ -44,16 +44,7 @@ fi
 trap 'bash "$cluster" stop "$state/cluster"' EXIT
 source "$state/cluster/env"
 
-# wait_for SECONDS WHAT COMMAND...: polls until COMMAND succeeds.
-wait_for() {
-  local seconds="$1" what="$2"
-  shift 2
-  for _ in $(seq $((seconds * 5))); do
-    if "$@" >/dev/null 2>&1; then return 0; fi
-    sleep 0.2
-  done
-  fail "no $what after $seconds s"
-}
+source "$(dirname "${BASH_SOURCE[0]}")/wait_for.sh"
 
 # The array job of a sweep's latest submission.
 latest_job() { tail -n 1 "$1/slurm/submissions.tsv" | cut -f1; }
