@@ -189,7 +189,7 @@ done_lines="$(cat "$dir"/slurm/logs/*.log | grep "^done ")"
 [[ "$(wc -l <<<"$done_lines")" -eq 12 && -z "$(awk '{print $2}' <<<"$done_lines" | sort | uniq -d)" ]] ||
   { echo "$done_lines"; fail "not each of the 12 runs published once"; }
 leftovers="$(find "$dir" \( -name '*.attempt.*' -o -name '*.failed' -o -name '*.removing.*' \
-  -o -name '*.tmp' \) -print)"
+  -o -name '*.tmp' -o -name '*.tmp.*' \) -print)"
 [[ -z "$leftovers" ]] || fail "left behind: $leftovers"
 say "12 of 12 jobs done once each, nothing half-written, report equal to the local backend's"
 say "sacct of every attempt:"

@@ -75,12 +75,22 @@ struct SequenceJob {
   std::string error;
 };
 
+// Removes what renders of `name` left in `dir` (temporary folders and logs "<name>.tmp.*"):
+// called once the sequence is in place, when every other render of it is useless; a render
+// still going on elsewhere then fails to write and finds the sequence in place.
+void remove_leftover_renders(const fs::path& dir, const std::string& name) {
+  std::error_code ignored;
+  const std::string prefix = name + ".tmp.";
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ignored))
+    if (e.path().filename().string().rfind(prefix, 0) == 0) fs::remove_all(e.path(), ignored);
+}
+
 void render_synthetic(SequenceJob& job, const RunnerOptions& options, int threads) {
   const SequenceSource& s = job.source;
   const fs::path dir = options.out / "sequences";
   const std::string name = sequence_key(s);
   job.folder = dir / name;
-  if (fs::exists(job.folder)) return;
+  if (fs::exists(job.folder)) return remove_leftover_renders(dir, name);
   const fs::path temp = dir / (name + ".tmp." + host_and_pid());
   const fs::path log = temp.string() + ".log";
   fs::remove_all(temp);
@@ -91,19 +101,17 @@ void render_synthetic(SequenceJob& job, const RunnerOptions& options, int thread
        std::to_string(s.seed), "--sensor", s.sensor, "--threads", std::to_string(threads),
        "--out", temp.string()},
       log);
-  if (code != 0) {
+  if (code != 0 && !fs::exists(job.folder)) {
     job.error =
         "rendering failed (exit code " + std::to_string(code) + "; see " + log.string() + ")";
     return;
   }
   std::error_code lost_race;
-  fs::rename(temp, job.folder, lost_race);
-  if (lost_race) {
-    if (!fs::exists(job.folder))
-      throw fs::filesystem_error("cannot rename", temp, job.folder, lost_race);
-    fs::remove_all(temp);  // another task's copy is in place: the same pixels
-  }
-  fs::rename(log, dir / (name + ".log"), lost_race);
+  if (code == 0) fs::rename(log, dir / (name + ".log"), lost_race);
+  if (code == 0) fs::rename(temp, job.folder, lost_race);
+  if (lost_race && !fs::exists(job.folder))
+    throw fs::filesystem_error("cannot rename", temp, job.folder, lost_race);
+  remove_leftover_renders(dir, name);  // another task's copy in place: the same pixels
 }
 
 void prepare_sequence(SequenceJob& job, const RunnerOptions& options, int threads) {

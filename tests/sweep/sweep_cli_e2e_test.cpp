@@ -116,6 +116,10 @@ TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
   ASSERT_EQ(test::run_slamkit("sweep status " + out.string(), &output), 0) << output;
   EXPECT_NE(output.find("running     3  num_features-600/desk/seed2"), std::string::npos)
       << output;
+  // ...and a render of the job's sequence that died with it left its temporary folder and log.
+  const fs::path dead_render = out / "sequences" / "synthetic_desk_40_seed2.tmp.node2.4711";
+  fs::create_directories(dead_render / "rgb");
+  std::ofstream(dead_render.string() + ".log") << "rendering\n";
 
   // One job alone, as an array task runs it, with all cores: the same numbers as before.
   ASSERT_EQ(test::run_slamkit("sweep task " + out.string() + " 3", &output), 0) << output;
@@ -123,6 +127,8 @@ TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
       << output;
   EXPECT_FALSE(fs::exists(dead));
   EXPECT_FALSE(fs::exists(lost / "only_in_the_dead_attempt.txt"));
+  EXPECT_FALSE(fs::exists(dead_render));
+  EXPECT_FALSE(fs::exists(dead_render.string() + ".log"));
   ASSERT_EQ(test::run_slamkit("sweep collect " + out.string(), &output), 0) << output;
   const auto again = read_runs_csv(out / "runs.csv");
   for (const char* metric : {"ate_rmse", "rpe_trans_rmse", "frames_lost", "map_completeness"})
@@ -159,6 +165,8 @@ TEST(SweepCli, ShippedSweepsPlan) {
        "dense-seeds: 2 entries x 2 variants x 3 seeds (1, 2, 3) = 12 jobs"},
       {"sweep-keyframe-culling.yaml",
        "keyframe-culling: 3 entries x 3 variants x 3 seeds (1, 2, 3) = 27 jobs"},
+      {"sweep-kinect-cluster.yaml",
+       "kinect-cluster: 3 entries x 2 variants x 2 seeds (1, 2) = 12 jobs"},
   };
   int found = 0;
   for (const auto& entry : fs::directory_iterator(results)) {
