@@ -50,14 +50,9 @@ std::vector<fs::path> attempt_folders(const fs::path& run_dir) {
 fs::path failed_folder(const fs::path& run_dir) { return run_dir.string() + ".failed"; }
 
 int remove_stale_attempts(const fs::path& run_dir) {
-  const fs::path own = attempt_folder(run_dir);
-  int removed = 0;
-  for (const fs::path& folder : attempt_folders(run_dir)) {
-    if (folder == own) continue;
-    remove_out_of_the_way(folder);
-    ++removed;
-  }
-  return removed;
+  const std::vector<fs::path> stale = attempt_folders(run_dir);
+  for (const fs::path& folder : stale) remove_out_of_the_way(folder);
+  return int(stale.size());
 }
 
 Publication publish_attempt(const fs::path& attempt, const fs::path& run_dir,

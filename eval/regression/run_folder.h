@@ -25,9 +25,10 @@ std::vector<std::filesystem::path> attempt_folders(const std::filesystem::path& 
 // Where the last failed attempt of `run_dir` is kept.
 std::filesystem::path failed_folder(const std::filesystem::path& run_dir);
 
-// Removes the attempt folders other attempts of `run_dir` left; how many there were. Each is
-// renamed out of the way before it is deleted, so a writer still alive on a lost node can only
-// fail, never write into a later attempt's folder.
+// Removes the attempt folders earlier attempts of `run_dir` left (one with this process's name
+// too: a dead process on this host may have had its pid); how many there were. Called before
+// this attempt creates its own. Each is renamed out of the way before it is deleted, so a
+// writer still alive on a lost node can only fail, never write into a later attempt's folder.
 int remove_stale_attempts(const std::filesystem::path& run_dir);
 
 enum class Publication { kPublished, kPublishedByAnother };
