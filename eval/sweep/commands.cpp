@@ -168,10 +168,13 @@ int collect_sweep(const fs::path& dir, bool allow_incomplete, const SweepEnviron
     std::printf("INCOMPLETE  %d of %zu runs finished: %s; nothing merged\n",
                 status.count(TaskCategory::kDone), plan.jobs.size(), counts_text(status).c_str());
     print_unfinished(plan, status);
-    std::printf("then        wait for them, or resubmit the failed and missing ones (slamkit sweep "
-                "run %s --backend slurm --resubmit-missing); `collect --allow-incomplete` merges "
-                "what there is\n",
-                dir.c_str());
+    const std::string again = status.submissions.empty()
+                                  ? "slamkit sweep run " + dir.string()
+                                  : "slamkit sweep run " + dir.string() +
+                                        " --backend slurm --resubmit-missing";
+    std::printf("then        wait for them, or run the failed and missing ones again (%s); "
+                "`collect --allow-incomplete` merges what there is\n",
+                again.c_str());
     return 1;
   }
   const SweepResults results = collect_results(plan, status);

@@ -100,6 +100,11 @@ TEST(SweepCli, LocalSweepPlannedRunCollectedResumedAndRepaired) {
   EXPECT_NE(output.find("missing     3  num_features-600/desk/seed2"), std::string::npos) << output;
   EXPECT_NE(output.find("INCOMPLETE  3 of 4 runs finished"), std::string::npos) << output;
   EXPECT_NE(output.find("nothing merged"), std::string::npos) << output;
+  // A local sweep is resumed by running it again, not by resubmitting to Slurm.
+  EXPECT_NE(output.find("run the failed and missing ones again (slamkit sweep run " +
+                        out.string() + ")"),
+            std::string::npos)
+      << output;
   EXPECT_FALSE(fs::exists(out / "report.md"));
   EXPECT_EQ(test::run_slamkit("sweep collect --allow-incomplete " + out.string(), &output), 1)
       << output;
