@@ -107,7 +107,7 @@ def plot_rpe_over_time(pairs, metrics, request):
     ax_r.set_ylabel("rotational error [deg]")
     ax_r.set_xlabel("time of the first pose of the pair [s]")
     finish_axes(ax_r, t, rot)
-    unit = {"s": "s", "f": "frames", "m": "m", "deg": "deg"}[rpe["unit"]]
+    unit = {"s": "s", "f": "frames", "m": "m", "deg": "deg", "rad": "rad"}[rpe["unit"]]
     ax_t.set_title("Relative pose error over %g %s: %s on %s\n(%d pose pairs, %s convention)"
                    % (rpe["delta"], unit, request["system_name"], request["title"],
                       rpe["pairs"], rpe["convention"]))

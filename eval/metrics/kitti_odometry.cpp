@@ -29,6 +29,10 @@ std::optional<size_t> segment_end(const std::vector<double>& distance, size_t fi
   return size_t(it - distance.begin());
 }
 
+// The devkit inverts its matrices in general, not by transposing the rotation: the same for a
+// rotation, not for the 7-digit matrices of KITTI's files (see Trajectory).
+Eigen::Matrix4d inverse(const Eigen::Isometry3d& pose) { return pose.matrix().inverse(); }
+
 double rotation_angle(const Eigen::Matrix3d& R) {
   return std::acos(std::clamp(0.5 * (R.trace() - 1.0), -1.0, 1.0));
 }
@@ -44,11 +48,12 @@ KittiOdometryResult compute_kitti_odometry(const std::vector<Eigen::Isometry3d>&
     for (double length : kLengths) {
       const auto last = segment_end(distance, first, length);
       if (!last) continue;
-      const Eigen::Isometry3d gt_delta = gt[first].inverse() * gt[*last];
-      const Eigen::Isometry3d est_delta = est[first].inverse() * est[*last];
-      const Eigen::Isometry3d error = est_delta.inverse() * gt_delta;
-      result.segments.push_back({first, *last, length, error.translation().norm() / length,
-                                 rotation_angle(error.linear()) / length});
+      const Eigen::Matrix4d gt_delta = inverse(gt[first]) * gt[*last].matrix();
+      const Eigen::Matrix4d est_delta = inverse(est[first]) * est[*last].matrix();
+      const Eigen::Matrix4d error = est_delta.inverse() * gt_delta;
+      result.segments.push_back({first, *last, length,
+                                 error.topRightCorner<3, 1>().norm() / length,
+                                 rotation_angle(error.topLeftCorner<3, 3>()) / length});
     }
   }
   for (double length : kLengths) {

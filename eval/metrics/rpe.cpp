@@ -35,8 +35,8 @@ Eigen::Isometry3d scaled(Eigen::Isometry3d T, double scale) {
   return T;
 }
 
-// The delta "index" of every pose for frames, metres and degrees (seconds use the stamps):
-// frame number, path length or accumulated rotation (the script's
+// The delta "index" of every pose for frames, metres, degrees and radians (seconds use the
+// stamps): frame number, path length or accumulated rotation (the script's
 // distances_along_trajectory / rotations_along_trajectory).
 std::vector<double> delta_index(const std::vector<double>& stamps, const PoseAt& pose,
                                 DeltaUnit unit) {
@@ -49,9 +49,10 @@ std::vector<double> delta_index(const std::vector<double>& stamps, const PoseAt&
   for (size_t k = 1; k < stamps.size(); ++k) {
     const Eigen::Isometry3d current = pose(k);
     const Eigen::Isometry3d motion = current.inverse() * previous;
-    index[k] =
-        index[k - 1] + (unit == DeltaUnit::kMetres ? motion.translation().norm()
-                                                   : rad_to_deg(trace_angle(motion.rotation())));
+    const double angle = trace_angle(motion.rotation());
+    index[k] = index[k - 1] + (unit == DeltaUnit::kMetres    ? motion.translation().norm()
+                               : unit == DeltaUnit::kDegrees ? rad_to_deg(angle)
+                                                             : angle);
     previous = current;
   }
   return index;
@@ -117,8 +118,10 @@ IdPairs path_all_pairs(const std::vector<double>& d, double delta, double tol) {
   return pairs;
 }
 
-// evo's filters.id_pairs_from_delta on the associated poses P (the estimate's).
-IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P, const RpeOptions& o) {
+// evo's filters.id_pairs_from_delta on the associated poses P (the estimate's) with their
+// unit quaternions.
+IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P,
+                  const std::vector<Eigen::Quaterniond>& orientation, const RpeOptions& o) {
   IdPairs pairs;
   const size_t n = stamps.size();
   if (o.unit == DeltaUnit::kFrames) {  // filter_pairs_by_index
@@ -149,15 +152,21 @@ IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P, const RpeO
     for (size_t k = 1; k < ids.size(); ++k) pairs.push_back({ids[k - 1], ids[k]});
     return pairs;
   }
-  if (o.unit == DeltaUnit::kDegrees) {  // filter_pairs_by_angle (evo pull request 426, Aug 2021)
-    if (o.delta > 180.0)
-      throw std::invalid_argument("--delta in degrees must be within [0, 180] (evo's rule)");
-    const double delta = o.delta * (M_PI / 180.0), tol = o.delta * o.rel_delta_tol * (M_PI / 180.0);
-    if (o.all_pairs) {  // every j > i whose direct relative angle is within tol of delta
+  if (o.unit == DeltaUnit::kDegrees || o.unit == DeltaUnit::kRadians) {
+    // filter_pairs_by_angle (evo pull request 426, Aug 2021)
+    const bool degrees = o.unit == DeltaUnit::kDegrees;
+    if (o.delta > (degrees ? 180.0 : M_PI))
+      throw std::invalid_argument(degrees ? "--delta in degrees must be within [0, 180] (evo's rule)"
+                                          : "--delta in radians must be within [0, pi] (evo's rule)");
+    const double to_rad = degrees ? M_PI / 180.0 : 1.0;
+    const double delta = o.delta * to_rad, tol = o.delta * o.rel_delta_tol * to_rad;
+    if (o.all_pairs) {
+      // Every j > i whose direct relative angle is within tol of delta; evo compares the poses'
+      // unit quaternions here (scipy Rotations), not their matrices.
       for (size_t i = 0; i + 1 < n; ++i) {
-        const Eigen::Isometry3d P_i = P(i);
+        const Eigen::Quaterniond inverse_i = orientation[i].conjugate();
         for (size_t j = i + 1; j < n; ++j) {
-          const double angle = rotation_angle(P_i.inverse() * P(j));
+          const double angle = Eigen::AngleAxisd(inverse_i * orientation[j]).angle();
           if (delta - tol <= angle && angle <= delta + tol) pairs.push_back({i, j});
         }
       }
@@ -265,7 +274,10 @@ RpeResult rpe_evo(const Trajectory& gt, const Trajectory& est,
   for (size_t k = 0; k < associated.size(); ++k) stamps[k] = est.stamp(associated[k].second);
   const PoseAt P = [&](size_t k) { return scaled(est.pose(associated[k].second), o.scale); };
   const PoseAt Q = [&](size_t k) { return gt.pose(associated[k].first); };
-  const IdPairs pairs = evo_pairs(stamps, P, o);
+  std::vector<Eigen::Quaterniond> orientations(associated.size());
+  for (size_t k = 0; k < associated.size(); ++k)
+    orientations[k] = est.orientation(associated[k].second);
+  const IdPairs pairs = evo_pairs(stamps, P, orientations, o);
   std::vector<RpePair> out;
   out.reserve(pairs.size());
   for (const auto& [i, j] : pairs) {
@@ -312,10 +324,11 @@ RpeResult compute_rpe(const Trajectory& gt, const Trajectory& est,
 }
 
 namespace {
-constexpr EnumNames<DeltaUnit, 4> kDeltaUnitNames = {{{DeltaUnit::kSeconds, "s"},
+constexpr EnumNames<DeltaUnit, 5> kDeltaUnitNames = {{{DeltaUnit::kSeconds, "s"},
                                                       {DeltaUnit::kFrames, "f"},
                                                       {DeltaUnit::kMetres, "m"},
-                                                      {DeltaUnit::kDegrees, "deg"}}};
+                                                      {DeltaUnit::kDegrees, "deg"},
+                                                      {DeltaUnit::kRadians, "rad"}}};
 constexpr EnumNames<RpeConvention, 2> kConventionNames = {
     {{RpeConvention::kTum, "tum"}, {RpeConvention::kEvo, "evo"}}};
 }  // namespace

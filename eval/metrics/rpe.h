@@ -1,5 +1,5 @@
 #pragma once
-// Relative pose error: drift over a fixed delta (seconds, frames, metres, degrees).
+// Relative pose error: drift over a fixed delta (seconds, frames, metres, degrees, radians).
 //   tum (default): exactly evaluate_rpe.py --fixed_delta: for each estimated pose i, j is the
 //     estimated pose whose delta index (time, frame number, path length or accumulated
 //     rotation) is closest to index_i + delta, and the pair is dropped when j is the last
@@ -23,7 +23,7 @@
 
 namespace slamkit::eval {
 
-enum class DeltaUnit { kSeconds, kFrames, kMetres, kDegrees };
+enum class DeltaUnit { kSeconds, kFrames, kMetres, kDegrees, kRadians };
 enum class RpeConvention { kTum, kEvo };
 
 struct RpeOptions {
@@ -64,7 +64,7 @@ RpeResult compute_rpe(const Trajectory& gt, const Trajectory& est,
 size_t find_closest_index(const std::vector<double>& sorted, double value);
 
 std::string to_string(DeltaUnit unit);
-DeltaUnit parse_delta_unit(const std::string& text);  // s, f, m, deg
+DeltaUnit parse_delta_unit(const std::string& text);  // s, f, m, deg, rad
 std::string to_string(RpeConvention convention);
 RpeConvention parse_rpe_convention(const std::string& text);  // tum, evo
 

@@ -41,4 +41,24 @@ double rotation_angle(const Eigen::Isometry3d& T) {
   return Eigen::AngleAxisd(T.rotation()).angle();
 }
 
+Eigen::Quaterniond quaternion_from_matrix(const Eigen::Matrix3d& R) {
+  const double trace = R.trace();
+  int largest = 3;  // 0..2: the diagonal element; 3: the trace
+  double best = trace;
+  for (int k = 0; k < 3; ++k)
+    if (R(k, k) > best) best = R(k, k), largest = k;
+  Eigen::Vector4d q;  // x y z w
+  if (largest == 3) {
+    q << R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1), 1 + trace;
+  } else {
+    const int i = largest, j = (i + 1) % 3, k = (j + 1) % 3;
+    q(i) = 1 - trace + 2 * R(i, i);
+    q(j) = R(j, i) + R(i, j);
+    q(k) = R(k, i) + R(i, k);
+    q(3) = R(k, j) - R(j, k);
+  }
+  q /= q.norm();
+  return Eigen::Quaterniond(q(3), q(0), q(1), q(2));
+}
+
 }  // namespace slamkit

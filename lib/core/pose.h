@@ -22,4 +22,11 @@ Eigen::Isometry3d orthonormalised(const Eigen::Isometry3d& T);
 // Rotation angle of a pose in radians, in [0, pi], robust near 0 and pi.
 double rotation_angle(const Eigen::Isometry3d& T);
 
+// The unit quaternion of a rotation matrix by the formula Markley's method picks (the largest of
+// the trace and the diagonal), as scipy's Rotation.from_matrix, which evo uses. Eigen's
+// conversion takes the trace formula whenever the trace is positive: the two agree on a
+// rotation, but on a matrix printed with 7 digits (KITTI's files), which is not quite one, they
+// differ by about 1e-7. Written by hand for that choice.
+Eigen::Quaterniond quaternion_from_matrix(const Eigen::Matrix3d& R);
+
 }  // namespace slamkit

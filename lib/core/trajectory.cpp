@@ -27,9 +27,19 @@ Trajectory::Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> 
     throw std::invalid_argument("Trajectory: stamps must not decrease");
 }
 
+Trajectory::Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
+                       std::vector<Eigen::Quaterniond> orientations,
+                       std::vector<Eigen::Matrix3d> rotations_as_written)
+    : Trajectory(std::move(stamps), std::move(positions), std::move(orientations)) {
+  if (rotations_as_written.size() != stamps_.size())
+    throw std::invalid_argument("Trajectory: arrays differ in size");
+  rotations_as_written_ = std::move(rotations_as_written);
+}
+
 void Trajectory::push_back(double stamp, const Eigen::Isometry3d& T_w_c) {
   // The same quaternion pose_to_tum writes, so a written trajectory is unchanged by storage.
   push_back(stamp, T_w_c.translation(), Eigen::Quaterniond(T_w_c.linear()));
+  if (keeps_rotations_as_written()) rotations_as_written_.back() = T_w_c.linear();
 }
 
 void Trajectory::push_back(double stamp, const Eigen::Vector3d& position,
@@ -39,17 +49,20 @@ void Trajectory::push_back(double stamp, const Eigen::Vector3d& position,
   stamps_.push_back(stamp);
   positions_.push_back(position);
   orientations_.push_back(orientation);
+  if (keeps_rotations_as_written()) rotations_as_written_.push_back(orientation.toRotationMatrix());
 }
 
 void Trajectory::reserve(size_t n) {
   stamps_.reserve(n);
   positions_.reserve(n);
   orientations_.reserve(n);
+  if (keeps_rotations_as_written()) rotations_as_written_.reserve(n);
 }
 
 Eigen::Isometry3d Trajectory::pose(size_t i) const {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = orientations_[i].toRotationMatrix();
+  T.linear() = keeps_rotations_as_written() ? rotations_as_written_[i]
+                                             : orientations_[i].toRotationMatrix();
   T.translation() = positions_[i];
   return T;
 }

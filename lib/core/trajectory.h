@@ -13,6 +13,9 @@ struct StampedPose {
 
 // Stored compactly (stamp, position, unit quaternion: 64 bytes a pose rather than 144 for a
 // stamp and a 4x4 matrix), so a million-pose file costs 64 MB; poses are rebuilt on access.
+// A trajectory read from rotation matrices (KITTI files) may also keep them as written: their
+// 6-7 printed digits leave R^T R - I at about 1e-7, and evo and the KITTI devkit compute with
+// such matrices as they are, so pose() returns them for the evaluation to do the same.
 class Trajectory {
  public:
   Trajectory() = default;
@@ -21,6 +24,10 @@ class Trajectory {
   // Takes parallel arrays already sorted by stamp, with unit quaternions (a file reader's).
   Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
              std::vector<Eigen::Quaterniond> orientations);
+  // The same with the rotation matrices as written, one a pose (the quaternions are theirs).
+  Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
+             std::vector<Eigen::Quaterniond> orientations,
+             std::vector<Eigen::Matrix3d> rotations_as_written);
 
   // Appends; the stamp must not be earlier than the last one.
   void push_back(double stamp, const Eigen::Isometry3d& T_w_c);
@@ -31,9 +38,11 @@ class Trajectory {
 
   size_t size() const { return stamps_.size(); }
   bool empty() const { return stamps_.empty(); }
-  // The pose rebuilt from its compact form (a value, not a reference into the trajectory).
+  // The pose rebuilt from its compact form (a value, not a reference into the trajectory), with
+  // the rotation matrix as written when the trajectory keeps those.
   StampedPose operator[](size_t i) const { return {stamps_[i], pose(i)}; }
   Eigen::Isometry3d pose(size_t i) const;
+  bool keeps_rotations_as_written() const { return !rotations_as_written_.empty(); }
   double stamp(size_t i) const { return stamps_[i]; }
   const Eigen::Vector3d& position(size_t i) const { return positions_[i]; }
   const Eigen::Quaterniond& orientation(size_t i) const { return orientations_[i]; }
@@ -52,6 +61,7 @@ class Trajectory {
   std::vector<double> stamps_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<Eigen::Quaterniond> orientations_;
+  std::vector<Eigen::Matrix3d> rotations_as_written_;  // empty, or one a pose
 };
 
 }  // namespace slamkit

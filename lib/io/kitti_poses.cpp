@@ -82,7 +82,7 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
     R << v[0], v[1], v[2], v[4], v[5], v[6], v[8], v[9], v[10];
     if (const std::string problem = rotation_problem(R); !problem.empty())
       throw_input_error(name, number, problem);
-    rows.add(stamp, Eigen::Vector3d(v[3], v[7], v[11]), Eigen::Quaterniond(R), number);
+    rows.add(stamp, Eigen::Vector3d(v[3], v[7], v[11]), R, number);
   });
   if (times && index < stamps.values.size())
     throw_input_error(times_name, stamps.lines[index],
@@ -96,7 +96,7 @@ void write_kitti_poses(const std::filesystem::path& path, const Trajectory& traj
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   write_file_atomically(path, [&](std::ostream& out) {
     for (size_t i = 0; i < trajectory.size(); ++i) {
-      const Eigen::Matrix3d R = trajectory.orientation(i).toRotationMatrix();
+      const Eigen::Matrix3d R = trajectory.pose(i).linear();
       const Eigen::Vector3d& t = trajectory.position(i);
       for (int r = 0; r < 3; ++r)
         out << format_exact(R(r, 0)) << ' ' << format_exact(R(r, 1)) << ' '

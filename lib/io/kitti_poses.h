@@ -9,9 +9,9 @@
 
 namespace slamkit {
 
-// Reads a KITTI pose file. Errors (InputError naming file and line) as read_tum_trajectory's,
-// with 12 fields a line, and a rotation block that is not a rotation (|R^T R - I| > 1e-3 or
-// det R < 0). `times` (a times.txt) must hold as many stamps as the file has pose lines, in
+// Reads a KITTI pose file; the trajectory keeps the rotation matrices as written. Errors
+// (InputError naming file and line) as read_tum_trajectory's, with 12 fields a line, and a
+// rotation block that is not a rotation (|R^T R - I| > 1e-3 or det R < 0). `times` (a times.txt) must hold as many stamps as the file has pose lines, in
 // options.time_unit. Blank and '#' lines are skipped in both files (they do not count as
 // poses); a pose or stamp that is NaN or inf skips the pose with a warning.
 TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
@@ -20,8 +20,8 @@ TrajectoryFile read_kitti_poses(const std::filesystem::path& path,
 
 // Writes `trajectory` as a KITTI pose file (each rotation as its matrix, every number in its
 // shortest exact form) and, when `times` is given, its stamps as a times.txt; so that
-// read_kitti_poses(path, times) gives the same stamps and positions back, and the rotations to
-// rounding.
+// read_kitti_poses(path, times) gives the same stamps and positions back, the rotations exactly
+// when the trajectory keeps them as written (one read from KITTI), else to rounding.
 void write_kitti_poses(const std::filesystem::path& path, const Trajectory& trajectory,
                        const std::optional<std::filesystem::path>& times = std::nullopt);
 

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "core/pose.h"
 #include "io/path_kind.h"
 
 namespace slamkit {
@@ -122,6 +123,13 @@ void PoseRows::add(double stamp, const Eigen::Vector3d& position, Eigen::Quatern
   lines_.push_back(line);
 }
 
+void PoseRows::add(double stamp, const Eigen::Vector3d& position, const Eigen::Matrix3d& R,
+                   int line) {
+  const size_t before = stamps_.size();
+  add(stamp, position, quaternion_from_matrix(R), line);
+  if (stamps_.size() > before) rotations_as_written_.push_back(R);
+}
+
 TrajectoryFile PoseRows::finish(DuplicateStamps rule, const std::string& format) {
   if (stamps_.empty()) throw_input_error(name_, "no valid pose in the file");
   if (result_.was_unsorted) {
@@ -131,7 +139,10 @@ TrajectoryFile PoseRows::finish(DuplicateStamps rule, const std::string& format)
   drop_duplicates(rule);
   result_.format = format;
   result_.trajectory =
-      Trajectory(std::move(stamps_), std::move(positions_), std::move(orientations_));
+      rotations_as_written_.empty()
+          ? Trajectory(std::move(stamps_), std::move(positions_), std::move(orientations_))
+          : Trajectory(std::move(stamps_), std::move(positions_), std::move(orientations_),
+                       std::move(rotations_as_written_));
   return std::move(result_);
 }
 
@@ -144,6 +155,7 @@ void PoseRows::sort_by_stamp() {
   reorder(stamps_, order);
   reorder(positions_, order);
   reorder(orientations_, order);
+  if (!rotations_as_written_.empty()) reorder(rotations_as_written_, order);
   reorder(lines_, order);
 }
 
@@ -176,12 +188,14 @@ void PoseRows::drop_duplicates(DuplicateStamps rule) {
     stamps_[kept] = stamps_[keep];
     positions_[kept] = positions_[keep];
     orientations_[kept] = orientations_[keep];
+    if (!rotations_as_written_.empty()) rotations_as_written_[kept] = rotations_as_written_[keep];
     lines_[kept] = lines_[keep];
     ++kept;
   }
   stamps_.resize(kept);
   positions_.resize(kept);
   orientations_.resize(kept);
+  if (!rotations_as_written_.empty()) rotations_as_written_.resize(kept);
   lines_.resize(kept);
 }
 

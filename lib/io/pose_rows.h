@@ -65,6 +65,9 @@ class PoseRows {
   // Adds a pose (any finite quaternion, normalised here); one with a non-finite value or a zero
   // quaternion is skipped with a warning. InputError beyond kMaxTrajectoryPoses.
   void add(double stamp, const Eigen::Vector3d& position, Eigen::Quaterniond q, int line);
+  // Adds a pose given as a rotation matrix, kept as written beside its quaternion (a reader
+  // calls either add or this for all its rows).
+  void add(double stamp, const Eigen::Vector3d& position, const Eigen::Matrix3d& R, int line);
   // Sorts (with a warning) if needed, keeps one pose of each repeated stamp. InputError when
   // no pose was added.
   TrajectoryFile finish(DuplicateStamps rule, const std::string& format);
@@ -75,6 +78,7 @@ class PoseRows {
   std::vector<double> stamps_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<Eigen::Quaterniond> orientations_;
+  std::vector<Eigen::Matrix3d> rotations_as_written_;
   std::vector<int> lines_;
 
   void sort_by_stamp();

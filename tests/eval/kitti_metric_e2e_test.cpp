@@ -63,7 +63,7 @@ TEST(EvalKitti, ScaleErrorGivesTheDevkitsPercentPerLength) {
 }
 
 // A winding 1500 m drive in the x-z plane (KITTI's ground plane) and an estimate with a
-// heading drift and a 2 % scale error.
+// heading drift and a 2 % scale error, printed as KITTI prints its poses (7 digits).
 fs::path write_winding_kitti(const fs::path& path, bool estimate) {
   std::FILE* f = std::fopen(path.c_str(), "w");
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -72,9 +72,7 @@ fs::path write_winding_kitti(const fs::path& path, bool estimate) {
     double yaw = 0.8 * std::sin(s / 200.0);
     if (estimate) yaw += 1e-4 * s + 0.01 * std::sin(s / 30.0);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY()).matrix();
-    for (int r = 0; r < 3; ++r)
-      std::fprintf(f, "%.17g %.17g %.17g %.17g%s", R(r, 0), R(r, 1), R(r, 2), position(r),
-                   r == 2 ? "\n" : " ");
+    test_files::write_kitti_pose(f, R, position);
     position += (estimate ? 1.02 : 1.0) * (R * Eigen::Vector3d::UnitZ());
   }
   std::fclose(f);
@@ -119,7 +117,8 @@ TEST(EvalKitti, MatchesAnIndependentNumpyImplementation) {
 
 // Against the devkit itself: evaluate_odometry.cpp (KITTI odometry devkit, as in
 // alexkreimer/odometry devkit/cpp) built with double for float, its arithmetic otherwise as
-// is, on the generated drive (poses/00.txt = gt.txt, results/00.txt = est.txt); its stats.txt
+// is, on the generated drive printed with KITTI's 7 digits (poses/00.txt = gt.txt,
+// results/00.txt = est.txt), whose matrices the devkit inverts as they are; its stats.txt
 // and per-length plot files printed with %.17g. Its units: translation as a fraction, rotation
 // in rad/m. (The float build differs from these by about 1e-5 relative.) The drive's steps are
 // not whole metres, so no segment ends on a tie that rounding could flip.
@@ -129,15 +128,15 @@ TEST(EvalKitti, MatchesTheDevkitsOwnNumbers) {
     int segments;
     double t, r;
   };
-  const Length kDevkit[] = {{100, 52, 0.01156214430008615, 0.00014624503209023128},
-                            {200, 46, 0.014976096658155845, 0.00014292690726437063},
-                            {300, 39, 0.019400470881779219, 0.00014324084677594837},
-                            {400, 30, 0.023168713249159534, 0.0001429000085296629},
-                            {500, 25, 0.025015698777399221, 0.00014404184125397571},
-                            {600, 17, 0.026756022194840898, 0.00014436768044771115},
-                            {700, 9, 0.026603175156067579, 0.00014202631712065917},
-                            {800, 3, 0.023159390312886507, 0.00014057399503720176}};
-  const double kOverallT = 0.018692141655359141, kOverallR = 0.00014392772905503606;
+  const Length kDevkit[] = {{100, 52, 0.011562242249416653, 0.00014623546413924593},
+                            {200, 46, 0.014976100385691657, 0.00014292678673253289},
+                            {300, 39, 0.019400495276775138, 0.00014324037918966688},
+                            {400, 30, 0.023168745950658591, 0.00014290030410130119},
+                            {500, 25, 0.025015711541556369, 0.0001440414694303306},
+                            {600, 17, 0.026756032534053297, 0.00014436738640777067},
+                            {700, 9, 0.026603186103795386, 0.00014202639512415026},
+                            {800, 3, 0.023159392461292772, 0.00014057475288946965}};
+  const double kOverallT = 0.018692176936476575, kOverallR = 0.0001439253590762419;
   const fs::path dir = test::temp_dir("eval_kitti");
   test_files::write_kitti_drive(dir);
   ASSERT_EQ(test::run_slamkit("eval kitti " + quoted(dir / "gt.txt") + " " +

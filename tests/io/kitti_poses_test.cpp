@@ -57,25 +57,50 @@ TEST(KittiPoses, TakesStampsFromTimesFile) {
   EXPECT_EQ(f.trajectory.stamp(1), 1.036742e-01);
 }
 
+// A pose as KITTI's own files print it: 7 significant digits, so R^T R - I is about 1e-7.
+const char* kRoundedPose =
+    "9.999978e-01 5.272628e-04 -2.066935e-03 -4.690294e-02 -5.296506e-04 9.999992e-01 "
+    "-1.154865e-03 -2.839928e-02 2.066324e-03 1.155958e-03 9.999971e-01 8.586941e-01\n";
+
+Eigen::Matrix3d rounded_rotation() {
+  Eigen::Matrix3d R;
+  R << 9.999978e-01, 5.272628e-04, -2.066935e-03, -5.296506e-04, 9.999992e-01, -1.154865e-03,
+      2.066324e-03, 1.155958e-03, 9.999971e-01;
+  return R;
+}
+
+TEST(KittiPoses, KeepsTheRotationMatricesAsWritten) {
+  const fs::path dir = test::temp_dir("kitti");
+  const TrajectoryFile f = read_kitti_poses(
+      write_text(dir, "p.txt", std::string(kIdentityAt123) + kRoundedPose), std::nullopt);
+  ASSERT_TRUE(f.trajectory.keeps_rotations_as_written());
+  EXPECT_EQ(f.trajectory.pose(1).linear(), rounded_rotation());
+  // Its unit quaternion is the nearest rotation, which differs from the matrix as written.
+  const Eigen::Matrix3d from_quaternion = f.trajectory.orientation(1).toRotationMatrix();
+  EXPECT_GT((from_quaternion - rounded_rotation()).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_LT((from_quaternion - rounded_rotation()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
 TEST(KittiPoses, AWrittenFileAndItsTimesReadBackAsTheyWere) {
   const fs::path dir = test::temp_dir("kitti_write");
-  const TrajectoryFile read =
-      read_kitti_poses(write_text(dir, "p.txt", std::string(kIdentityAt123) + kQuarterTurnZ),
-                       write_text(dir, "times.txt", "0.0\n0.1036742\n"));
+  const std::string rows = std::string(kIdentityAt123) + kQuarterTurnZ + kRoundedPose;
+  const TrajectoryFile read = read_kitti_poses(
+      write_text(dir, "p.txt", rows), write_text(dir, "times.txt", "0.0\n0.1036742\n0.2\n"));
   // The times file in a folder of its own, which does not exist yet.
   write_kitti_poses(dir / "out" / "p.txt", read.trajectory, dir / "out" / "t" / "times.txt");
-  // The identity's rotation is exact; the quarter turn's passes through a quaternion.
-  EXPECT_EQ(test::read_text(dir / "out" / "p.txt").substr(0, std::strlen(kIdentityAt123)),
-            kIdentityAt123);
-  EXPECT_EQ(test::read_text(dir / "out" / "t" / "times.txt"), "0\n0.1036742\n");
+  // Every matrix as it was read (in shortest exact form: 9.999978e-01 is 0.9999978).
+  const std::string written = test::read_text(dir / "out" / "p.txt");
+  EXPECT_EQ(written.substr(0, std::strlen(kIdentityAt123) + std::strlen(kQuarterTurnZ)),
+            std::string(kIdentityAt123) + kQuarterTurnZ);
+  EXPECT_EQ(test::read_text(dir / "out" / "t" / "times.txt"), "0\n0.1036742\n0.2\n");
   const TrajectoryFile back =
       read_kitti_poses(dir / "out" / "p.txt", dir / "out" / "t" / "times.txt");
-  ASSERT_EQ(back.trajectory.size(), 2u);
-  for (size_t i = 0; i < 2; ++i) {
+  ASSERT_EQ(back.trajectory.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(back.trajectory.stamp(i), read.trajectory.stamp(i));
-    EXPECT_EQ(back.trajectory.position(i), read.trajectory.position(i));
-    EXPECT_TRUE(back.trajectory.orientation(i).isApprox(read.trajectory.orientation(i), 1e-15));
+    EXPECT_EQ(back.trajectory.pose(i).matrix(), read.trajectory.pose(i).matrix()) << i;
   }
+  EXPECT_EQ(back.trajectory.pose(2).linear(), rounded_rotation());
 }
 
 TEST(KittiPoses, HostileFilesNameFileAndLine) {
@@ -112,7 +137,7 @@ TEST(KittiPoses, SkipsNonFiniteAndHandlesUnsortedAndRepeatedStampsAsTum) {
   const fs::path dir = test::temp_dir("kitti");
   const std::string good = kIdentityAt123;
   const fs::path poses =
-      write_text(dir, "p.txt", good + "1 0 0 nan 0 1 0 2 0 0 1 3\n" + good + good);
+      write_text(dir, "p.txt", good + "1 0 0 nan 0 1 0 2 0 0 1 3\n" + good + kRoundedPose);
   const TrajectoryFile f = read_kitti_poses(poses, write_text(dir, "t.txt", "2\n3\n1\n1\n"));
   // Line 2 skipped, lines 3 and 4 share stamp 1 (the last kept), sorted before line 1.
   ASSERT_EQ(f.trajectory.size(), 2u);
@@ -121,6 +146,9 @@ TEST(KittiPoses, SkipsNonFiniteAndHandlesUnsortedAndRepeatedStampsAsTum) {
   EXPECT_EQ(f.duplicate_stamps_dropped, 1);
   EXPECT_EQ(f.trajectory.stamp(0), 1.0);
   EXPECT_EQ(f.trajectory.stamp(1), 2.0);
+  // The matrices as written follow their lines through sorting and the repeated stamp.
+  EXPECT_EQ(f.trajectory.pose(0).linear(), rounded_rotation());
+  EXPECT_TRUE(f.trajectory.pose(1).linear().isIdentity(0));
   ASSERT_EQ(f.warnings.size(), 3u);
   EXPECT_EQ(f.warnings[0].find(poses.string() + ":2: non-finite value"), 0u) << f.warnings[0];
   EXPECT_NE(f.warnings[2].find("p.txt:3: duplicate timestamp, line replaced by line 4"),

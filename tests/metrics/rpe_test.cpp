@@ -176,6 +176,16 @@ TEST(RpeEvo, DegreeWindowsAccumulateRelativeAnglesFromThePreviousPose) {
   EXPECT_EQ(compute_rpe(t, t, pairs, o).pairs.size(), 9u);
   o.delta = 181;
   EXPECT_THROW(compute_rpe(t, t, pairs, o), std::invalid_argument);
+  // The same windows and pairs in radians (evo's --delta_unit r).
+  o.unit = DeltaUnit::kRadians;
+  o.all_pairs = false;
+  o.delta = 19 * M_PI / 180;
+  EXPECT_EQ(pair_stamps(compute_rpe(t, t, pairs, o)), expected);
+  o.all_pairs = true;
+  o.delta = 10 * M_PI / 180;
+  EXPECT_EQ(compute_rpe(t, t, pairs, o).pairs.size(), 9u);
+  o.delta = 3.2;
+  EXPECT_THROW(compute_rpe(t, t, pairs, o), std::invalid_argument);
 }
 
 // evo_rpe -as scales the estimate before RPE, and metre windows measure the scaled path. The
