@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "bin/command.h"
+#include "bin/figure_options.h"
 #include "bin/output_folder.h"
 #include "eval/metrics/association.h"
 #include "eval/metrics/ate.h"
@@ -38,27 +39,12 @@ void evaluate_or_exit(eval::EvaluationRequest& request, bool do_ate, bool do_rpe
 struct CompareArgs {
   std::vector<std::string> runs;
   std::string out_dir;
-  std::vector<std::string> plot_formats;
-  bool pdf = false;
-  int dpi = 0;
+  eval::FigureFiles figures;
   bool trajectories = false;
   std::string planes = "xy";
   std::string title;
   bool quiet = false;
 };
-
-// The options of every command that draws figures: which files, and the PNG's resolution.
-void add_figure_options(CLI::App* cmd, std::vector<std::string>& formats, bool& pdf, int& dpi) {
-  // One value per --plot-format, so that a list cannot swallow the positional arguments after it.
-  cmd->add_option("--plot-format", formats,
-                  "Figure files: png, svg or pdf, repeated or comma-separated (default: png,svg)")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(CLI::IsMember({"png", "svg", "pdf"}));
-  cmd->add_flag("--pdf", pdf, "Also write PDF figures (with the default: png, svg and pdf)");
-  cmd->add_option("--dpi", dpi, "Resolution of PNG figures in dots per inch (default 200)")
-      ->check(CLI::Range(10, 2400));
-}
 
 CLI::Validator planes_validator() {
   return CLI::Validator(
@@ -111,7 +97,7 @@ void add_common_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--json", a.json_path, "metrics.json path (merged into if it exists)");
   cmd->add_option("--plot", a.plot_dir, "Draw plots into this folder (error if impossible)");
   cmd->add_flag("--no-plot", a.no_plot, "Do not draw plots into --out");
-  add_figure_options(cmd, a.plot_formats, a.pdf, a.dpi);
+  add_figure_options(cmd, a.figures);
   cmd->add_option("--title", a.title, "Sequence name for titles (default: groundtruth folder)");
   cmd->add_option("--system-name", a.system_name,
                   "System name for titles (default: estimate file name)");
@@ -134,7 +120,7 @@ void add_ate_options(CLI::App* cmd, eval::EvaluationRequest& a) {
 
 void add_rpe_options(CLI::App* cmd, eval::EvaluationRequest& a) {
   cmd->add_option("--delta", a.rpe.delta, "Pair distance, in --unit")->capture_default_str();
-  cmd->add_option("--unit", a.unit, "s (seconds), f (frames), m (metres), deg")
+  cmd->add_option("--unit", a.unit, "s (seconds), f (frames), m (metres), deg, rad")
       ->capture_default_str();
   cmd->add_flag("--all-pairs", a.rpe.all_pairs,
                 "tum: every pose pair (delta ignored); evo: a pair at every pose");
@@ -162,7 +148,7 @@ void run_compare(const CompareArgs& args) {
   json figure = {
       {"figure", "compare"}, {"out", out.string()}, {"title", args.title}, {"runs", json::array()}};
   for (const auto& run : runs) figure["runs"].push_back({run.name, run.dir.string()});
-  figure.update(eval::figure_files(args.plot_formats, args.pdf, args.dpi));
+  figure.update(eval::figure_files(args.figures));
   json figures = json::array({figure});
   if (args.trajectories) {
     figure["figure"] = "trajectories";
@@ -234,7 +220,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
   cmp_cmd->add_option("runs", cmp->runs, "Run folders")->required();
   cmp_cmd->add_option("--out", cmp->out_dir, "Output folder")->required();
   cmp_cmd->add_option("--title", cmp->title, "Plot title (default: the runs' sequence)");
-  add_figure_options(cmp_cmd, cmp->plot_formats, cmp->pdf, cmp->dpi);
+  add_figure_options(cmp_cmd, cmp->figures);
   cmp_cmd->add_flag("--trajectories", cmp->trajectories,
                     "Also draw the runs' aligned estimates and the groundtruth together "
                     "(trajectories_PLANE, trajectories_xyz; the runs must share a groundtruth)");

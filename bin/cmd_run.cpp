@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/figure_options.h"
 #include "bin/output_folder.h"
 #include "bin/run_job.h"
 #include "bin/sequence_options.h"
@@ -28,6 +29,7 @@ struct RunArgs {
   std::string vocabulary_file;
   bool allow_out_in_sequence = false;
   bool report = true;
+  eval::FigureFiles figures;
   SequenceOptions sequence;
 };
 
@@ -49,6 +51,7 @@ void run(const RunArgs& args) {
   RunJob job;
   job.settings = settings;
   job.plot = args.plot;
+  job.figures = args.figures;
   job.vocabulary = vocabulary ? &*vocabulary : nullptr;
   run_into_folder(seq, args.out, job);
 }
@@ -66,6 +69,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
+  add_figure_options(cmd, args->figures);
   add_lost_frames_option(cmd, args->lost_frames);
   cmd->add_flag("--ascii", args->ascii, "Write map.ply (and mesh.ply) as ASCII (default: binary)");
   cmd->add_flag("--mesh", args->mesh,

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "bin/command.h"
+#include "bin/figure_options.h"
 #include "bin/output_folder.h"
 #include "bin/run_job.h"
 #include "bin/sequence_options.h"
@@ -22,6 +23,7 @@ struct TrackArgs {
   std::optional<LostFrames> lost_frames;
   bool evaluate = true;
   bool plot = true;
+  eval::FigureFiles figures;
   bool allow_out_in_sequence = false;
   SequenceOptions sequence;
 };
@@ -39,6 +41,7 @@ void track(const TrackArgs& args) {
   job.settings = front_end_only(settings);
   job.back_end = false;
   job.plot = args.plot;
+  job.figures = args.figures;
   run_into_folder(seq, args.out, job);
 }
 
@@ -55,6 +58,7 @@ const bool kRegistered = register_command([](CLI::App& root) {
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));  // pipeline.threads' range
   cmd->add_flag("!--no-eval", args->evaluate, "Skip the evaluation against groundtruth");
   cmd->add_flag("!--no-plot", args->plot, "Evaluate without drawing the plots");
+  add_figure_options(cmd, args->figures);
   add_lost_frames_option(cmd, args->lost_frames);
   add_sequence_options(cmd, args->sequence);
   add_allow_out_in_sequence_flag(cmd, args->allow_out_in_sequence);

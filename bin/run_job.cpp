@@ -1,5 +1,6 @@
 #include "bin/run_job.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -22,6 +23,16 @@ RunResult run_stages(const TumSequence& seq, const fs::path& out, const RunJob& 
   write_run_outputs(out, name, seq.camera(), job.settings, result);
   write_timing_json(out, name, result);
   return result;
+}
+
+// The figure files the run writes: those asked for, and the SVGs its page shows.
+eval::FigureFiles figure_files(const RunJob& job) {
+  eval::FigureFiles files = job.figures;
+  const bool page = job.back_end && job.settings.report.enabled;
+  const auto& formats = files.formats;
+  if (page && !formats.empty() && std::find(formats.begin(), formats.end(), "svg") == formats.end())
+    files.formats.push_back("svg");
+  return files;
 }
 
 void print_outputs(const fs::path& out, const RunResult& result) {
@@ -49,7 +60,7 @@ RunResult run_into_folder(const TumSequence& seq, const fs::path& out, const Run
     if (job.back_end) {
       if (!job.quiet) print_back_end_summary(seq, settings, result);
       if (settings.pipeline.evaluate) {
-        eval::evaluate_run_folder(seq, out, job.plot, job.quiet);
+        eval::evaluate_run_folder(seq, out, job.plot, job.quiet, figure_files(job));
         if (result.loop_pass.ran) eval::evaluate_run_loops(seq, out, job.quiet);
         if (result.fusion.frames > 0)
           eval::evaluate_run_map(seq, settings.map.max_depth, out, job.quiet);
@@ -57,7 +68,8 @@ RunResult run_into_folder(const TumSequence& seq, const fs::path& out, const Run
       if (!job.quiet) print_outputs(out, result);
     } else {
       if (!job.quiet) print_outputs(out, result);
-      if (settings.pipeline.evaluate) eval::evaluate_run_folder(seq, out, job.plot, job.quiet);
+      if (settings.pipeline.evaluate)
+        eval::evaluate_run_folder(seq, out, job.plot, job.quiet, figure_files(job));
     }
     return result.seconds;
   });

@@ -4,6 +4,7 @@
 // started there writes the folder the CLI writes.
 #include <filesystem>
 
+#include "eval/plotting.h"
 #include "io/tum_sequence.h"
 #include "loop/vocabulary.h"
 #include "pipeline/batch_engine.h"
@@ -15,6 +16,7 @@ struct RunJob {
   Settings settings;       // with the command's options applied
   bool back_end = true;    // false: `track`, the front end alone (settings made front_end_only)
   bool plot = true;        // the evaluation's plots
+  eval::FigureFiles figures;  // their files (--plot-format, --pdf, --dpi)
   bool quiet = false;      // no summary lines on stdout
   bool progress_bars = true;
   OnSignal on_signal = OnSignal::kEndProcess;

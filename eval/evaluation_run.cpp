@@ -216,7 +216,7 @@ void add_figures(const EvaluationRequest& a, const std::string& kind, const std:
   json figure = {{"figure", kind},   {"metrics", a.json_path},
                  {"csv", csv_path},  {"out", requested ? a.plot_dir : a.out_dir},
                  {"title", a.title}, {"system_name", a.system_name}};
-  figure.update(figure_files(a.plot_formats, a.pdf, a.dpi));
+  figure.update(figure_files(a.figures));
   if (kind == "ate") figure["planes"] = split_planes(a.planes);
   figures.push_back(figure);
 }

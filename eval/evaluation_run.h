@@ -9,6 +9,7 @@
 
 #include "eval/metrics/ate.h"
 #include "eval/metrics/rpe.h"
+#include "eval/plotting.h"
 #include "io/trajectory_io.h"
 
 namespace slamkit::eval {
@@ -36,9 +37,7 @@ struct EvaluationRequest {
   std::string ate_csv, rpe_csv, aligned_path;
   std::string plot_dir;  // --plot: plots must be drawn (failing exits 1)
   bool no_plot = false;
-  std::vector<std::string> plot_formats;  // png, svg, pdf; empty: png and svg (plotting.h)
-  bool pdf = false;                       // pdf as well
-  int dpi = 0;                            // of PNGs; 0: the plot style's
+  FigureFiles figures;
   std::string planes = "xy";
   std::string title, system_name;
   bool quiet = false;

@@ -55,13 +55,15 @@ std::optional<std::filesystem::path> plot_script(const std::string& script, std:
 
 }  // namespace
 
-nlohmann::json figure_files(const std::vector<std::string>& formats, bool pdf, int dpi) {
+nlohmann::json figure_files(const FigureFiles& asked) {
   std::vector<std::string> files;
-  for (const std::string& f : formats.empty() ? std::vector<std::string>{"png", "svg"} : formats)
+  for (const std::string& f :
+       asked.formats.empty() ? std::vector<std::string>{"png", "svg"} : asked.formats)
     if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
-  if (pdf && std::find(files.begin(), files.end(), "pdf") == files.end()) files.push_back("pdf");
+  if (asked.pdf && std::find(files.begin(), files.end(), "pdf") == files.end())
+    files.push_back("pdf");
   nlohmann::json fields = {{"formats", files}};
-  if (dpi != 0) fields["dpi"] = dpi;
+  if (asked.dpi != 0) fields["dpi"] = asked.dpi;
   return fields;
 }
 

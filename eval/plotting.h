@@ -19,11 +19,18 @@ struct PlotOutcome {
   double seconds = 0;           // wall time of the plotting process
 };
 
-// The "formats" and "dpi" fields of a figure request (plot_style.save): `formats` as given
-// (--plot-format; empty: png and svg, the files every command wrote before it existed) with pdf
+// Which figure files a command writes (--plot-format, --pdf, --dpi).
+struct FigureFiles {
+  std::vector<std::string> formats;  // png, svg, pdf; empty: png and svg
+  bool pdf = false;                  // pdf as well
+  int dpi = 0;                       // of PNGs; 0: the plot style's
+};
+
+// The "formats" and "dpi" fields of a figure request (plot_style.save): the formats as given
+// (empty: png and svg, the files every command wrote before --plot-format existed) with pdf
 // added for `pdf` (--pdf, the older spelling, which kept the PNG and SVG), each once; "dpi" only
-// when `dpi` (--dpi, PNG only) is not 0, else the style's 200.
-nlohmann::json figure_files(const std::vector<std::string>& formats, bool pdf, int dpi);
+// when not 0, else the style's 200.
+nlohmann::json figure_files(const FigureFiles& files);
 
 // Runs plot.py with `figures`, a JSON list of {"figure": KIND, ...} (see plot.py), under
 // $SLAMKIT_PYTHON, else /usr/bin/python3 (Debian's, which has matplotlib; the python3 on

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <functional>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "bin/output_folder.h"
 #include "bin/python/bindings.h"
+#include "bin/python/option_values.h"
 #include "bin/python/trajectory_arrays.h"
 #include "eval/evaluation_run.h"
 
@@ -31,22 +31,6 @@ double non_negative(const py::handle& value, const char* option) {
     throw std::invalid_argument(std::string(option) + ": " + std::to_string(v) +
                                 " is not a non-negative number");
   return v;
-}
-
-std::string text(const py::handle& value) {
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  return py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
-}
-
-std::string member(const py::handle& value, const char* option,
-                   std::initializer_list<const char*> allowed) {
-  const std::string v = text(value);
-  std::string list;
-  for (const char* a : allowed) {
-    if (v == a) return v;
-    list += (list.empty() ? "" : ", ") + std::string(a);
-  }
-  throw std::invalid_argument(std::string(option) + ": '" + v + "' is not one of " + list);
 }
 
 using Setter = std::function<void(EvaluationRequest&, const py::handle&)>;
@@ -100,28 +84,9 @@ const std::map<std::string, Option>& option_table() {
       {"json", {kCommon, [](auto& a, auto v) { a.json_path = text(v); }}},
       {"plot", {kCommon, [](auto& a, auto v) { a.plot_dir = text(v); }}},
       {"no_plot", {kCommon, [](auto& a, auto v) { a.no_plot = v.template cast<bool>(); }}},
-      {"pdf", {kCommon, [](auto& a, auto v) { a.pdf = v.template cast<bool>(); }}},
-      {"plot_format",
-       {kCommon,
-        [](auto& a, auto v) {
-          // "png,svg" or a list of names, as --plot-format given once or repeated.
-          std::vector<std::string> formats;
-          if (py::isinstance<py::str>(v)) {
-            std::stringstream list(text(v));
-            for (std::string name; std::getline(list, name, ',');) formats.push_back(name);
-          } else {
-            formats = v.template cast<std::vector<std::string>>();
-          }
-          for (const std::string& format : formats)
-            a.plot_formats.push_back(member(py::str(format), "plot_format", {"png", "svg", "pdf"}));
-        }}},
-      {"dpi",
-       {kCommon,
-        [](auto& a, auto v) {
-          a.dpi = v.template cast<int>();
-          if (a.dpi < 10 || a.dpi > 2400)
-            throw std::invalid_argument("dpi: " + std::to_string(a.dpi) + " not in [10, 2400]");
-        }}},
+      {"pdf", {kCommon, [](auto& a, auto v) { a.figures.pdf = v.template cast<bool>(); }}},
+      {"plot_format", {kCommon, [](auto& a, auto v) { a.figures.formats = plot_formats(v); }}},
+      {"dpi", {kCommon, [](auto& a, auto v) { a.figures.dpi = dpi(v); }}},
       {"title", {kCommon, [](auto& a, auto v) { a.title = text(v); }}},
       {"system_name", {kCommon, [](auto& a, auto v) { a.system_name = text(v); }}},
       {"quiet", {kCommon, [](auto& a, auto v) { a.quiet = v.template cast<bool>(); }}},
@@ -145,7 +110,7 @@ const std::map<std::string, Option>& option_table() {
       {"unit",
        {kRpe,
         [](auto& a, auto v) {
-          a.unit = member(v, "unit", {"s", "f", "m", "deg"});
+          a.unit = member(v, "unit", {"s", "f", "m", "deg", "rad"});
         }}},
       {"all_pairs", {kRpe, [](auto& a, auto v) { a.rpe.all_pairs = v.template cast<bool>(); }}},
       {"rpe_convention",

@@ -15,6 +15,7 @@
 
 #include "bin/output_folder.h"
 #include "bin/python/bindings.h"
+#include "bin/python/option_values.h"
 #include "bin/python/settings_from_python.h"
 #include "bin/run_job.h"
 #include "fusion/ply_cloud.h"
@@ -145,6 +146,7 @@ const TumSequence& sequence_of(const py::object& given, std::optional<TumSequenc
 py::object run_from_python(const py::object& sequence_arg, const py::object& settings_arg,
                            const std::optional<fs::path>& out, std::optional<int> threads,
                            const std::optional<fs::path>& vocabulary_file, bool plot,
+                           const py::object& plot_format, const py::object& dpi_arg,
                            const py::object& progress, bool verbose, bool back_end) {
   if (out) cli::check_output_folder("out", *out);
   std::optional<TumSequence> opened;
@@ -164,6 +166,8 @@ py::object run_from_python(const py::object& sequence_arg, const py::object& set
   }
   job.back_end = back_end;
   job.plot = plot;
+  if (!plot_format.is_none()) job.figures.formats = plot_formats(plot_format);
+  if (!dpi_arg.is_none()) job.figures.dpi = dpi(dpi_arg);
   job.quiet = !verbose;
   job.progress_bars = verbose;
   job.on_signal = OnSignal::kRaise;
@@ -206,7 +210,8 @@ void bind_run(py::module_& m) {
           "folder). settings: a nested dict or a YAML path, as settings() takes (threads= "
           "overrides pipeline.threads). With out=, the run folder `slamkit run --out` writes, "
           "byte for byte but for run.json's times, with its evaluation, plots (plot=False: "
-          "none) and report.html as the settings say; without, a temporary folder, removed. "
+          "none; plot_format= and dpi= as --plot-format and --dpi) and report.html as the "
+          "settings say; without, a temporary folder, removed. "
           "vocabulary: the loop pass's (slamkit vocab train, or ORBvoc.txt). progress(stage, "
           "done, total) is called as frames are tracked and fused. Ctrl-C, or an exception "
           "from progress, stops the run at the next frame or fused batch and is raised; the "
@@ -216,14 +221,15 @@ void bind_run(py::module_& m) {
       "run",
       [](const py::object& sequence, const py::object& settings,
          const std::optional<fs::path>& out, std::optional<int> threads,
-         const std::optional<fs::path>& vocabulary, bool plot, const py::object& progress,
-         bool verbose) {
-        return run_from_python(sequence, settings, out, threads, vocabulary, plot, progress,
-                               verbose, true);
+         const std::optional<fs::path>& vocabulary, bool plot, const py::object& plot_format,
+         const py::object& dots, const py::object& progress, bool verbose) {
+        return run_from_python(sequence, settings, out, threads, vocabulary, plot, plot_format,
+                               dots, progress, verbose, true);
       },
       "sequence"_a, "settings"_a = py::none(), "out"_a = py::none(), py::kw_only(),
       "threads"_a = py::none(), "vocabulary"_a = py::none(), "plot"_a = true,
-      "progress"_a = py::none(), "verbose"_a = false, run_doc.c_str());
+      "plot_format"_a = py::none(), "dpi"_a = py::none(), "progress"_a = py::none(),
+      "verbose"_a = false, run_doc.c_str());
   const std::string track_doc =
       std::string(
           "`slamkit track`: the front end alone (no bundle adjustment, loop pass or map), "
@@ -233,13 +239,14 @@ void bind_run(py::module_& m) {
       "track",
       [](const py::object& sequence, const py::object& settings,
          const std::optional<fs::path>& out, std::optional<int> threads, bool plot,
-         const py::object& progress, bool verbose) {
-        return run_from_python(sequence, settings, out, threads, std::nullopt, plot, progress,
-                               verbose, false);
+         const py::object& plot_format, const py::object& dots, const py::object& progress,
+         bool verbose) {
+        return run_from_python(sequence, settings, out, threads, std::nullopt, plot, plot_format,
+                               dots, progress, verbose, false);
       },
       "sequence"_a, "settings"_a = py::none(), "out"_a = py::none(), py::kw_only(),
-      "threads"_a = py::none(), "plot"_a = true, "progress"_a = py::none(), "verbose"_a = false,
-      track_doc.c_str());
+      "threads"_a = py::none(), "plot"_a = true, "plot_format"_a = py::none(),
+      "dpi"_a = py::none(), "progress"_a = py::none(), "verbose"_a = false, track_doc.c_str());
 }
 
 }  // namespace slamkit::python

@@ -22,7 +22,7 @@ std::string fixed(double value, int decimals) {
 }  // namespace
 
 void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& out, bool plot,
-                         bool quiet) {
+                         bool quiet, const FigureFiles& figures) {
   if (!seq.groundtruth()) {
     if (!quiet) std::printf("evaluation  skipped: the sequence has no groundtruth.txt\n");
     return;
@@ -34,6 +34,7 @@ void evaluate_run_folder(const TumSequence& seq, const std::filesystem::path& ou
   request.system_name = "slamkit";
   request.title = seq.folder().filename().string();
   request.no_plot = !plot;
+  request.figures = figures;
   request.quiet = quiet;
   if (seq.duration() < 2.0) {  // too short for the benchmark's 1 s drift: consecutive frames
     request.unit = "f";

@@ -5,14 +5,15 @@
 // its summary lines unless `quiet`.
 #include <filesystem>
 
+#include "eval/plotting.h"
 #include "io/tum_sequence.h"
 
 namespace slamkit::eval {
 
-// ATE and RPE of RUN/trajectory.txt, written into the run folder, and their plots unless
-// `plot` is false; says so when the sequence has no groundtruth.
+// ATE and RPE of RUN/trajectory.txt, written into the run folder, and their plots (as
+// `figures` says) unless `plot` is false; says so when the sequence has no groundtruth.
 void evaluate_run_folder(const TumSequence& sequence, const std::filesystem::path& out, bool plot,
-                         bool quiet = false);
+                         bool quiet = false, const FigureFiles& figures = {});
 
 // The loops of RUN/loops.csv judged against the groundtruth (and revisits.txt when the
 // sequence has one): printed, added to RUN/metrics.json, and each loop's verdict written to

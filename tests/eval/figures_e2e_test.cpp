@@ -1,5 +1,6 @@
-// Figures for papers, end to end: --plot-format (and --pdf, its older spelling), --dpi, and
-// `eval compare --trajectories`, which draws several runs of one groundtruth together.
+// Figures for papers, end to end: --plot-format (and --pdf, its older spelling), --dpi (on
+// `eval` and on `run` and `track`), and `eval compare --trajectories`, which draws several runs
+// of one groundtruth together.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,6 +109,49 @@ TEST(Figures, DpiSetsThePngResolutionAndItsPixelSize) {
   EXPECT_EQ(resolution_100, 3937u);  // 100 per inch in pixels per metre, rounded
   EXPECT_EQ(resolution_300, 11811u);
   EXPECT_NEAR(double(width_300) / width_100, 3.0, 0.05);
+}
+
+// `run` and `track` take the same figure options for their evaluation's figures; `run` also
+// draws the SVGs its page shows, unless there is no page.
+TEST(Figures, RunAndTrackWriteTheFiguresAskedFor) {
+  REQUIRE_MATPLOTLIB();
+  SLAMKIT_REQUIRE_DATA(sequence, "rgbd_dataset_freiburg1_desk_9frames");
+  const fs::path dir = test::temp_dir("figures_run");
+  const char* kFigures[] = {"trajectory_xy", "ate_over_time", "rpe_over_time"};
+  const auto has = [&](const char* run, const char* name, const char* ext) {
+    return fs::exists(dir / run / (std::string(name) + ext));
+  };
+  std::string log;
+  ASSERT_EQ(test::run_slamkit("run " + quoted(sequence) + " --out " + quoted(dir / "run") +
+                                  " --plot-format pdf --threads 1",
+                              &log),
+            0)
+      << log;
+  ASSERT_EQ(test::run_slamkit("run " + quoted(sequence) + " --out " +
+                                  quoted(dir / "run_no_page") +
+                                  " --plot-format pdf --no-report --threads 1",
+                              &log),
+            0)
+      << log;
+  for (const char* name : kFigures) {
+    EXPECT_EQ(head(dir / "run" / (std::string(name) + ".pdf"), 5), "%PDF-") << name;
+    EXPECT_TRUE(has("run", name, ".svg")) << name;  // for the page
+    EXPECT_FALSE(has("run", name, ".png")) << name;
+    EXPECT_TRUE(has("run_no_page", name, ".pdf")) << name;
+    EXPECT_FALSE(has("run_no_page", name, ".svg")) << name;
+  }
+  EXPECT_NE(test::read_text(dir / "run" / "report.html").find("<svg"), std::string::npos);
+  ASSERT_EQ(test::run_slamkit("track " + quoted(sequence) + " --out " + quoted(dir / "track") +
+                                  " --plot-format png --dpi 100 --threads 1",
+                              &log),
+            0)
+      << log;
+  for (const char* name : kFigures) {
+    EXPECT_EQ(png_width_and_resolution(dir / "track" / (std::string(name) + ".png")).second,
+              3937u)
+        << name;
+    EXPECT_FALSE(has("track", name, ".svg")) << name;
+  }
 }
 
 // Two runs of one groundtruth are drawn together; a run of another groundtruth is refused by

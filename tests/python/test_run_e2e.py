@@ -68,6 +68,22 @@ def test_a_run_from_python_writes_the_folder_the_cli_writes(tmp_path, sequence, 
         assert result.map_points is None and "map.ply" not in python_files
 
 
+def test_figure_options_as_the_clis(tmp_path, sequence):
+    options = ("--plot-format", "png", "--dpi", 50)
+    cli = run_cli("track", sequence.folder, "--out", tmp_path / "run", "--threads", 1, *options)
+    assert cli.returncode == 0, cli.stderr
+    cli_files = folder_bytes(tmp_path / "run")
+    shutil.rmtree(tmp_path / "run")
+    slamkit.track(sequence, {"pipeline": {"threads": 1}}, tmp_path / "run", plot_format="png",
+                  dpi=50)
+    assert folder_bytes(tmp_path / "run") == cli_files
+    assert "ate_over_time.png" in cli_files and "ate_over_time.svg" not in cli_files
+    with pytest.raises(ValueError, match="dpi: 5 not in"):
+        slamkit.track(sequence, plot_format="png", dpi=5)
+    with pytest.raises(ValueError, match="plot_format: 'eps'"):
+        slamkit.run(sequence, plot_format="eps")
+
+
 def test_without_out_the_same_run_is_returned_and_nothing_is_kept(tmp_path, sequence):
     kept = slamkit.run(sequence, {"pipeline": {"threads": 1}}, tmp_path / "kept", plot=False)
     result = slamkit.run(sequence.folder, {"pipeline": {"threads": 1}})
