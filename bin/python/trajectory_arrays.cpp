@@ -157,7 +157,7 @@ Array quaternions_array(const Trajectory& t) {
   Array a({static_cast<py::ssize_t>(t.size()), py::ssize_t{4}});
   double* out = a.mutable_data();
   for (size_t i = 0; i < t.size(); ++i) {
-    const Eigen::Quaterniond& q = t.orientation(i);
+    const Eigen::Quaterniond q = t.orientation(i);
     out[4 * i] = q.x();
     out[4 * i + 1] = q.y();
     out[4 * i + 2] = q.z();

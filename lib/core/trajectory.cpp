@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/pose.h"
+
 namespace slamkit {
 
 Trajectory::Trajectory(const std::vector<StampedPose>& poses) {
@@ -28,43 +30,63 @@ Trajectory::Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> 
 }
 
 Trajectory::Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
-                       std::vector<Eigen::Quaterniond> orientations,
                        std::vector<Eigen::Matrix3d> rotations_as_written)
-    : Trajectory(std::move(stamps), std::move(positions), std::move(orientations)) {
-  if (rotations_as_written.size() != stamps_.size())
+    : stamps_(std::move(stamps)),
+      positions_(std::move(positions)),
+      rotations_as_written_(std::move(rotations_as_written)),
+      keeps_matrices_(true) {
+  if (positions_.size() != stamps_.size() || rotations_as_written_.size() != stamps_.size())
     throw std::invalid_argument("Trajectory: arrays differ in size");
-  rotations_as_written_ = std::move(rotations_as_written);
+  if (!std::is_sorted(stamps_.begin(), stamps_.end()))
+    throw std::invalid_argument("Trajectory: stamps must not decrease");
 }
 
 void Trajectory::push_back(double stamp, const Eigen::Isometry3d& T_w_c) {
   // The same quaternion pose_to_tum writes, so a written trajectory is unchanged by storage.
+  if (keeps_matrices_) {
+    append(stamp, T_w_c.translation());
+    rotations_as_written_.push_back(T_w_c.linear());
+    return;
+  }
   push_back(stamp, T_w_c.translation(), Eigen::Quaterniond(T_w_c.linear()));
-  if (keeps_rotations_as_written()) rotations_as_written_.back() = T_w_c.linear();
 }
 
 void Trajectory::push_back(double stamp, const Eigen::Vector3d& position,
                            const Eigen::Quaterniond& orientation) {
+  append(stamp, position);
+  if (keeps_matrices_) {
+    rotations_as_written_.push_back(orientation.toRotationMatrix());
+  } else {
+    orientations_.push_back(orientation);
+  }
+}
+
+void Trajectory::append(double stamp, const Eigen::Vector3d& position) {
   if (!stamps_.empty() && stamp < stamps_.back())
     throw std::invalid_argument("Trajectory::push_back: stamps must not decrease");
   stamps_.push_back(stamp);
   positions_.push_back(position);
-  orientations_.push_back(orientation);
-  if (keeps_rotations_as_written()) rotations_as_written_.push_back(orientation.toRotationMatrix());
 }
 
 void Trajectory::reserve(size_t n) {
   stamps_.reserve(n);
   positions_.reserve(n);
-  orientations_.reserve(n);
-  if (keeps_rotations_as_written()) rotations_as_written_.reserve(n);
+  if (keeps_matrices_) {
+    rotations_as_written_.reserve(n);
+  } else {
+    orientations_.reserve(n);
+  }
 }
 
 Eigen::Isometry3d Trajectory::pose(size_t i) const {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = keeps_rotations_as_written() ? rotations_as_written_[i]
-                                             : orientations_[i].toRotationMatrix();
+  T.linear() = keeps_matrices_ ? rotations_as_written_[i] : orientations_[i].toRotationMatrix();
   T.translation() = positions_[i];
   return T;
+}
+
+Eigen::Quaterniond Trajectory::orientation(size_t i) const {
+  return keeps_matrices_ ? quaternion_from_matrix(rotations_as_written_[i]) : orientations_[i];
 }
 
 std::vector<StampedPose> Trajectory::poses() const {

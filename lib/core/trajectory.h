@@ -13,9 +13,10 @@ struct StampedPose {
 
 // Stored compactly (stamp, position, unit quaternion: 64 bytes a pose rather than 144 for a
 // stamp and a 4x4 matrix), so a million-pose file costs 64 MB; poses are rebuilt on access.
-// A trajectory read from rotation matrices (KITTI files) may also keep them as written: their
-// 6-7 printed digits leave R^T R - I at about 1e-7, and evo and the KITTI devkit compute with
-// such matrices as they are, so pose() returns them for the evaluation to do the same.
+// A trajectory read from rotation matrices (KITTI files) keeps them as written instead (104
+// bytes a pose): their 7 printed digits leave R^T R - I at about 1e-7, and evo and the KITTI
+// devkit compute with such matrices as they are, so pose() returns them for the evaluation to
+// do the same, and orientation() their quaternion as scipy's Rotation.from_matrix gives it.
 class Trajectory {
  public:
   Trajectory() = default;
@@ -24,9 +25,8 @@ class Trajectory {
   // Takes parallel arrays already sorted by stamp, with unit quaternions (a file reader's).
   Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
              std::vector<Eigen::Quaterniond> orientations);
-  // The same with the rotation matrices as written, one a pose (the quaternions are theirs).
+  // The same with rotation matrices, kept as written (near-rotations: a file reader's).
   Trajectory(std::vector<double> stamps, std::vector<Eigen::Vector3d> positions,
-             std::vector<Eigen::Quaterniond> orientations,
              std::vector<Eigen::Matrix3d> rotations_as_written);
 
   // Appends; the stamp must not be earlier than the last one.
@@ -42,10 +42,10 @@ class Trajectory {
   // the rotation matrix as written when the trajectory keeps those.
   StampedPose operator[](size_t i) const { return {stamps_[i], pose(i)}; }
   Eigen::Isometry3d pose(size_t i) const;
-  bool keeps_rotations_as_written() const { return !rotations_as_written_.empty(); }
+  bool keeps_rotations_as_written() const { return keeps_matrices_; }
   double stamp(size_t i) const { return stamps_[i]; }
   const Eigen::Vector3d& position(size_t i) const { return positions_[i]; }
-  const Eigen::Quaterniond& orientation(size_t i) const { return orientations_[i]; }
+  Eigen::Quaterniond orientation(size_t i) const;
   std::vector<StampedPose> poses() const;
   const std::vector<double>& stamps() const { return stamps_; }
   double start_time() const { return stamps_.front(); }
@@ -58,10 +58,14 @@ class Trajectory {
   double path_length() const;
 
  private:
+  void append(double stamp, const Eigen::Vector3d& position);  // checks the stamp's order
+
   std::vector<double> stamps_;
   std::vector<Eigen::Vector3d> positions_;
+  // One of the two holds a rotation a pose, the other is empty.
   std::vector<Eigen::Quaterniond> orientations_;
-  std::vector<Eigen::Matrix3d> rotations_as_written_;  // empty, or one a pose
+  std::vector<Eigen::Matrix3d> rotations_as_written_;
+  bool keeps_matrices_ = false;
 };
 
 }  // namespace slamkit

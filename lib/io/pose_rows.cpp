@@ -7,7 +7,6 @@
 #include <numeric>
 
 #include "core/error.h"
-#include "core/pose.h"
 #include "io/path_kind.h"
 
 namespace slamkit {
@@ -112,6 +111,19 @@ void PoseRows::add(double stamp, const Eigen::Vector3d& position, Eigen::Quatern
     return;
   }
   q.coeffs() /= norm;
+  append(stamp, position, line);
+  orientations_.push_back(q);
+}
+
+void PoseRows::add(double stamp, const Eigen::Vector3d& position, const Eigen::Matrix3d& R,
+                   int line) {
+  if (!std::isfinite(stamp) || !position.allFinite() || !R.allFinite())
+    return skip_non_finite(line);
+  append(stamp, position, line);
+  rotations_as_written_.push_back(R);
+}
+
+void PoseRows::append(double stamp, const Eigen::Vector3d& position, int line) {
   if (stamps_.size() == kMaxTrajectoryPoses)
     throw_input_error(name_, line,
                       "more than " + std::to_string(kMaxTrajectoryPoses) +
@@ -119,15 +131,7 @@ void PoseRows::add(double stamp, const Eigen::Vector3d& position, Eigen::Quatern
   if (!stamps_.empty() && stamp < stamps_.back()) result_.was_unsorted = true;
   stamps_.push_back(stamp);
   positions_.push_back(position);
-  orientations_.push_back(q);
   lines_.push_back(line);
-}
-
-void PoseRows::add(double stamp, const Eigen::Vector3d& position, const Eigen::Matrix3d& R,
-                   int line) {
-  const size_t before = stamps_.size();
-  add(stamp, position, quaternion_from_matrix(R), line);
-  if (stamps_.size() > before) rotations_as_written_.push_back(R);
 }
 
 TrajectoryFile PoseRows::finish(DuplicateStamps rule, const std::string& format) {
@@ -141,8 +145,7 @@ TrajectoryFile PoseRows::finish(DuplicateStamps rule, const std::string& format)
   result_.trajectory =
       rotations_as_written_.empty()
           ? Trajectory(std::move(stamps_), std::move(positions_), std::move(orientations_))
-          : Trajectory(std::move(stamps_), std::move(positions_), std::move(orientations_),
-                       std::move(rotations_as_written_));
+          : Trajectory(std::move(stamps_), std::move(positions_), std::move(rotations_as_written_));
   return std::move(result_);
 }
 
@@ -154,7 +157,7 @@ void PoseRows::sort_by_stamp() {
                    [&](size_t a, size_t b) { return stamps_[a] < stamps_[b]; });
   reorder(stamps_, order);
   reorder(positions_, order);
-  reorder(orientations_, order);
+  if (!orientations_.empty()) reorder(orientations_, order);
   if (!rotations_as_written_.empty()) reorder(rotations_as_written_, order);
   reorder(lines_, order);
 }
@@ -187,14 +190,14 @@ void PoseRows::drop_duplicates(DuplicateStamps rule) {
     }
     stamps_[kept] = stamps_[keep];
     positions_[kept] = positions_[keep];
-    orientations_[kept] = orientations_[keep];
+    if (!orientations_.empty()) orientations_[kept] = orientations_[keep];
     if (!rotations_as_written_.empty()) rotations_as_written_[kept] = rotations_as_written_[keep];
     lines_[kept] = lines_[keep];
     ++kept;
   }
   stamps_.resize(kept);
   positions_.resize(kept);
-  orientations_.resize(kept);
+  if (!orientations_.empty()) orientations_.resize(kept);
   if (!rotations_as_written_.empty()) rotations_as_written_.resize(kept);
   lines_.resize(kept);
 }

@@ -65,8 +65,8 @@ class PoseRows {
   // Adds a pose (any finite quaternion, normalised here); one with a non-finite value or a zero
   // quaternion is skipped with a warning. InputError beyond kMaxTrajectoryPoses.
   void add(double stamp, const Eigen::Vector3d& position, Eigen::Quaterniond q, int line);
-  // Adds a pose given as a rotation matrix, kept as written beside its quaternion (a reader
-  // calls either add or this for all its rows).
+  // Adds a pose given as a rotation matrix, kept as written (a reader adds all its rows one
+  // way); one with a non-finite value is skipped with a warning.
   void add(double stamp, const Eigen::Vector3d& position, const Eigen::Matrix3d& R, int line);
   // Sorts (with a warning) if needed, keeps one pose of each repeated stamp. InputError when
   // no pose was added.
@@ -77,10 +77,11 @@ class PoseRows {
   TrajectoryFile result_;
   std::vector<double> stamps_;
   std::vector<Eigen::Vector3d> positions_;
-  std::vector<Eigen::Quaterniond> orientations_;
-  std::vector<Eigen::Matrix3d> rotations_as_written_;
+  std::vector<Eigen::Quaterniond> orientations_;       // rows added with a quaternion
+  std::vector<Eigen::Matrix3d> rotations_as_written_;  // or with a matrix
   std::vector<int> lines_;
 
+  void append(double stamp, const Eigen::Vector3d& position, int line);
   void sort_by_stamp();
   void drop_duplicates(DuplicateStamps rule);
 };
