@@ -32,6 +32,18 @@ AteResult compute_ate(const Trajectory& gt, const Trajectory& est,
 }
 
 Trajectory apply_alignment(const Trajectory& est, const Alignment& alignment) {
+  if (est.keeps_rotations_as_written()) {
+    // A KITTI estimate's near-rotations are moved as the matrices they are, so that each is
+    // written as its unit quaternion (Trajectory::orientation), as any pose is.
+    std::vector<Eigen::Vector3d> positions(est.size());
+    std::vector<Eigen::Matrix3d> rotations(est.size());
+    for (size_t i = 0; i < est.size(); ++i) {
+      const Eigen::Isometry3d moved = alignment.apply(est.pose(i));
+      positions[i] = moved.translation();
+      rotations[i] = moved.linear();
+    }
+    return Trajectory(est.stamps(), std::move(positions), std::move(rotations));
+  }
   Trajectory out;
   out.reserve(est.size());
   for (size_t i = 0; i < est.size(); ++i) out.push_back(est.stamp(i), alignment.apply(est.pose(i)));

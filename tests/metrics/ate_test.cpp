@@ -115,6 +115,27 @@ TEST(Ate, ApplyAlignmentMovesTheWholeEstimate) {
     EXPECT_TRUE(aligned[k].T_w_c.isApprox(gt[k].T_w_c, 1e-12)) << k;
 }
 
+// A KITTI estimate's matrices, rounded to 7 digits, move as matrices: the aligned poses are the
+// alignment times the matrices as written, and their quaternions (what aligned.txt holds) unit.
+TEST(Ate, ApplyAlignmentMovesMatricesAsWrittenAndGivesUnitQuaternions) {
+  const Trajectory gt = helix(50);
+  const Trajectory moved = transformed(gt, kR.transpose(), -kR.transpose() * kT);
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Matrix3d> rounded;
+  for (size_t k = 0; k < moved.size(); ++k) {
+    positions.push_back(moved.position(k));
+    rounded.push_back((moved.pose(k).linear() * 1e7).array().round().matrix() / 1e7);
+  }
+  const Trajectory est(moved.stamps(), positions, rounded);
+  const AteResult r = ate_of(gt, est, AlignMethod::kSe3);
+  const Trajectory aligned = apply_alignment(est, r.alignment);
+  ASSERT_EQ(aligned.size(), est.size());
+  for (size_t k = 0; k < est.size(); ++k) {
+    EXPECT_TRUE(aligned.pose(k).isApprox(r.alignment.apply(est.pose(k)), 1e-15)) << k;
+    EXPECT_NEAR(aligned.orientation(k).norm(), 1.0, 1e-15) << k;
+  }
+}
+
 TEST(Ate, AnEstimateThatNeverMovesIsAnErrorNamingTheFile) {
   const Trajectory gt = helix(50);
   Trajectory still;
