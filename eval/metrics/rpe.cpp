@@ -119,9 +119,9 @@ IdPairs path_all_pairs(const std::vector<double>& d, double delta, double tol) {
 }
 
 // evo's filters.id_pairs_from_delta on the associated poses P (the estimate's) with their
-// unit quaternions.
+// unit quaternions Q.
 IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P,
-                  const std::vector<Eigen::Quaterniond>& orientation, const RpeOptions& o) {
+                  const std::function<Eigen::Quaterniond(size_t)>& Q, const RpeOptions& o) {
   IdPairs pairs;
   const size_t n = stamps.size();
   if (o.unit == DeltaUnit::kFrames) {  // filter_pairs_by_index
@@ -163,6 +163,8 @@ IdPairs evo_pairs(const std::vector<double>& stamps, const PoseAt& P,
     if (o.all_pairs) {
       // Every j > i whose direct relative angle is within tol of delta; evo compares the poses'
       // unit quaternions here (scipy Rotations), not their matrices.
+      std::vector<Eigen::Quaterniond> orientation(n);
+      for (size_t k = 0; k < n; ++k) orientation[k] = Q(k);
       for (size_t i = 0; i + 1 < n; ++i) {
         const Eigen::Quaterniond inverse_i = orientation[i].conjugate();
         for (size_t j = i + 1; j < n; ++j) {
@@ -274,10 +276,8 @@ RpeResult rpe_evo(const Trajectory& gt, const Trajectory& est,
   for (size_t k = 0; k < associated.size(); ++k) stamps[k] = est.stamp(associated[k].second);
   const PoseAt P = [&](size_t k) { return scaled(est.pose(associated[k].second), o.scale); };
   const PoseAt Q = [&](size_t k) { return gt.pose(associated[k].first); };
-  std::vector<Eigen::Quaterniond> orientations(associated.size());
-  for (size_t k = 0; k < associated.size(); ++k)
-    orientations[k] = est.orientation(associated[k].second);
-  const IdPairs pairs = evo_pairs(stamps, P, orientations, o);
+  const IdPairs pairs = evo_pairs(
+      stamps, P, [&](size_t k) { return est.orientation(associated[k].second); }, o);
   std::vector<RpePair> out;
   out.reserve(pairs.size());
   for (const auto& [i, j] : pairs) {
